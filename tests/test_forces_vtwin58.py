@@ -151,3 +151,17 @@ def test_one_resistance_diagram_per_piston_each_over_its_own_path(link58):
         # the loaded share of the abscissa is one stroke: 2r of the 4r out and back
         loaded = sum(b[0] - a[0] for a, b in zip(curve.points, curve.points[1:]) if a[1] > 0 and b[1] > 0)
         assert abs(loaded * rec.scales["mu_s"] - 2 * R) < 1e-3
+
+
+def test_the_force_positions_note_names_a_piston_idle_while_the_output_works(link58):
+    """The note said nothing where the output B works (every force bound to the working stroke) though
+    C may be on its own idle stroke there: at crank 270° B draws 900 N and C none — said; at the
+    force position (15°) both work and the tables say it all."""
+    from graphplan.sheets.forces import idle_words
+    assert idle_words(link58, 15.0, "en") == ""
+    for phi in (270.0, 100.0):
+        on = {name: VTWIN.working(name, phi) for name in VTWIN.guides}
+        said = idle_words(link58, phi, "en")
+        assert said.startswith(", working stroke" if on["B"] else ", idle stroke"), said
+        for name in VTWIN.guides:
+            assert (f"P_{{{name}}} = 900 N" if on[name] else f"P_{{{name}}} = 0") in said, said

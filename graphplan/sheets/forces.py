@@ -121,7 +121,7 @@ def idle_words(st: Study, phi: float, lang: str) -> str:
     (the tables give it)."""
     import numpy as np
 
-    from graphplan.exact.kinetostatics import loads, working_stroke
+    from graphplan.exact.kinetostatics import force_working, loads, working_stroke
     from graphplan.util.words import force_symbol
     mech = st.mech
     bound = [f"P_{f.point}" for f in mech.forces if f.stroke != "both"]
@@ -131,8 +131,11 @@ def idle_words(st: Study, phi: float, lang: str) -> str:
     at = np.atleast_1d(float(phi))
     working = np.atleast_1d(working_stroke(st, at))
     on_work = bool(working[0])
-    if on_work and all(f.stroke == "working" for f in mech.forces if f.stroke != "both") and all(
-            m.stroke == "working" for m in mech.moments if m.stroke != "both"):
+    # each piston's force on its own stroke (kinetostatics.force_working: a V-twin's P_C may be idle
+    # while the output's P_B works)
+    forces_work = all(f.stroke == "working" and bool(np.atleast_1d(force_working(st, f.point, at, working))[0])
+                      for f in mech.forces if f.stroke != "both")
+    if on_work and forces_work and all(m.stroke == "working" for m in mech.moments if m.stroke != "both"):
         return ""
     acting = [ld for ld in loads(st, st.solve(at), working) if ld.kind == "external"]
     said = []
