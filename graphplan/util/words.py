@@ -727,7 +727,10 @@ WORDS: dict[str, tuple[str, str]] = {
                       "округлення відомих сил на плані ({n} сил по ±{half} мм)",
                       "{sym}: shorter than a division on its plan ({mm} mm), read off detail I; its error is the "
                       "known forces rounded on the plan ({n} forces, ±{half} mm each)"),
-    "fs why short": ("{sym}: короткий вектор на плані ({mm} мм)", "{sym}: a short vector on its plan ({mm} mm)"),
+    "fs why short": ("{sym}: короткий вектор на плані ({mm} мм): пів поділки лінійки — {share} % його, а як сторона, "
+                     "що замикає план, він несе округлення відомих сил ({n} сил по ±{half} мм)",
+                     "{sym}: a short vector on its plan ({mm} mm): half a ruler division is {share} % of it, and as "
+                     "the side closing the plan it carries the known forces' rounding ({n} forces, ±{half} mm each)"),
     "fs why angle": ("{sym}: лінії реакцій перетинаються під малим кутом ({angle}°)",
                      "{sym}: the reactions' lines cross at a small angle ({angle}°)"),
     "fs why pa": ("{sym}: короткий відрізок pa на важелі ({mm} мм)", "{sym}: a short pa on the lever ({mm} mm)"),
