@@ -201,7 +201,9 @@ def own_stroke(st: Study, point: str) -> tuple[float, float] | None:
     mech = st.mech
     if st.output.kind == "slide" and st.output.name == point:
         return None
-    key = ("own stroke", point)
+    # (a Study made from another by dataclasses.replace shares its memo: keyed by what the stroke reads)
+    key = ("own stroke", point, mech.working_stroke, st.extremes, tuple(sorted(mech.frame.items())),
+           mech.crank.length)
     if key in st.memo:
         return st.memo[key]
     out = None
