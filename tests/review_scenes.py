@@ -7838,3 +7838,90 @@ planets = 3
 module = 0.004
 rpm = 1500
 '''
+
+
+# Stop 58: frc58's own: an opposed (boxer) two-cylinder compressor — two groups on one crank pin, the pistons'
+# dead centres the same crank angles, each piston's gas force on its own compression stroke ("to_max")
+BOXER_FRC58 = '''# frc58's own (stop 58): an opposed (boxer) two-cylinder compressor: one crank O1A, two connecting rods
+# AB and AC on the one crank pin A, pistons B and C on one line through O1, on either side of it
+# (I(0-1) -> II(2-3) ВВП -> II(4-5) ВВП); single-acting: 1200 N of gas on each piston's own compression
+# stroke (outwards, away from O1: working_stroke = "to_max" along each cylinder's own axis).
+title = "Опозитний двоциліндровий компресор"
+title_en = "Opposed two-cylinder compressor"
+designation = "ТММ.КП.58.010"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-58"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+
+[frame.guides]
+right = { through = [0, 0], angle_deg = 0, title_uk = "правого циліндра", title_en = "of the right cylinder" }
+left = { through = [0, 0], angle_deg = 180, title_uk = "лівого циліндра", title_en = "of the left cylinder" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 600
+direction = "ccw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.24
+points = { S2 = 0.3 }
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "right"
+mass = 3.0
+
+[[link]]
+name = "AC"
+number = 4
+joints = ["A", "C"]
+length = 0.24
+points = { S4 = 0.3 }
+
+[[link]]
+name = "C"
+number = 5
+joints = ["C"]
+slides_on = "left"
+mass = 3.0
+
+[positions]
+count = 12
+start = "working"
+accel = [2]
+force_phi_deg = 60
+output = "B"
+working_stroke = "to_max"
+
+[loads]
+g = 9.81
+mass_per_length = 20
+inertia_factor = 0.1
+
+[[force]]
+point = "B"
+magnitude = 1200
+stroke = "working"
+direction = "oppose"
+
+[[force]]
+point = "C"
+magnitude = 1200
+stroke = "working"
+direction = "oppose"
+'''

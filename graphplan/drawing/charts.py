@@ -21,6 +21,7 @@ from graphplan.graphic.scales import GOST_BETWEEN, SERIES, series_value
 from graphplan.exact.kinetostatics import Kinetostatics, full_turn
 from graphplan.util.files import write_atomic
 from graphplan.exact.positions import Study
+from graphplan.model.mechanism import FRAME
 
 SAMPLES = 360
 
@@ -891,12 +892,13 @@ def _detail(t: Turn, f: np.ndarray, d: Detail, inside: list[tuple[int, complex]]
     return det, shared
 
 
-def path_travelled(t: Turn) -> np.ndarray:
+def path_travelled(t: Turn, point: str | None = None) -> np.ndarray:
     """The output's path from position 0 over the cycle at the turn's samples and back at position 0
     (n + 1 values): the stroke out, then the stroke back — each position once, in the order the
-    crank passes it (m for a slide, degrees for a link)."""
+    crank passes it (m for a slide, degrees for a link); ``point``: another slide's (a second piston)."""
+    from graphplan.exact.positions import Output
     st = t.ks.st
-    out = st.output
+    out = st.output if point is None else Output("slide", point)
     vals = np.asarray(out.value(t.ks.kin), dtype=float)
     if out.kind != "slide":
         vals = np.degrees(vals)
@@ -932,17 +934,20 @@ def hatch_lines(curve: list[tuple[float, float]], pitch: float) -> list[tuple[fl
     return out
 
 
-def resistance_loads(t: Turn) -> tuple[list, bool]:
+def resistance_loads(t: Turn, point: str | None = None) -> tuple[list, bool]:
     """The loads the resistance diagram draws, and whether they are moments: the output's own —
     the forces at its point (forces on two pistons are not summed, review 13: a V-twin's chart drew
     |P_C + P_B|, P_B constant on the other piston), else the moments on an output link that turns
     (stop 57: the kneading machine's rocker carries its 70 N·m working moment, the slider it is
     driven through 300 N on both strokes — the chart drew that constant 300 N over the rocker's
     angle ψ₅, a hatched rectangle with no stroke in it, and left out the rocker's own resistance) —
-    else every external force, else every external moment. ([], False) without an external load."""
+    else every external force, else every external moment. ([], False) without an external load.
+    ``point``: the forces at that slide (``other_pistons``)."""
     ext = [ld for ld in t.ks.loads if ld.kind == "external"]
     out = t.ks.st.output
     forces = [ld for ld in ext if ld.point is not None]
+    if point is not None:
+        return [ld for ld in forces if ld.point == point], False
     own = [ld for ld in forces if ld.point == out.name]
     moments = [ld for ld in ext if ld.point is None and out.kind != "slide" and ld.link == out.name]
     if own:
@@ -952,21 +957,46 @@ def resistance_loads(t: Turn) -> tuple[list, bool]:
     return (forces, False) if forces else (ext, bool(ext))
 
 
-def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang: str = "uk") -> Record | None:
+def other_pistons(t: Turn) -> list[str]:
+    """The slides besides the output whose stroke-bound forces get a resistance diagram of their own
+    (stop 58: a V-twin compressor's 900 N on piston C went undrawn beside P_B's diagram — the lab
+    draws one per piston, each over its own path and strokes): the points of the scene's
+    ``[[force]]``s bound to a stroke that slide on a frame guide, when the diagram draws the output's
+    own force. (A constant load on both strokes, review 13's P_B on the other piston, is no resistance
+    over a stroke.)"""
+    from graphplan.exact.positions import point_slider
+    st = t.ks.st
+    mech = st.mech
+    own = [ld for ld in t.ks.loads if ld.kind == "external" and ld.point is not None]
+    if st.output.kind != "slide" or not any(ld.point == st.output.name for ld in own):
+        return []
+    out: list[str] = []
+    for f in mech.forces:
+        slider = point_slider(mech, f.point)
+        if (f.stroke != "both" and f.point != st.output.name and f.point not in out and slider is not None
+                and mech.guides[mech.links[slider].slides_on].body == FRAME):
+            out.append(f.point)
+    return out
+
+
+def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang: str = "uk",
+                      point: str | None = None) -> Record | None:
     """Seed 000's diagram of the resistance force: |P| of the output's external force (else of the
     external forces) along the output's path
     over the cycle from position 0 (the stroke out, then back), so the working stroke carries the
     force and the idle stroke lies on the axis (unless a load acts on it too), the loaded spans hatched — each position numbered once, under its own stroke
     (the scene's ``positions.working_stroke``); None when the scene has no external force."""
-    ext, couple = resistance_loads(t)
+    ext, couple = resistance_loads(t, point)
     if not ext:
         return None
     st = t.ks.st
-    path = path_travelled(t)
-    dist_unit = unit("m", lang) if st.output.kind == "slide" else "°"
+    path = path_travelled(t, point)
+    dist_unit = unit("m", lang) if st.output.kind == "slide" or point is not None else "°"
     # a slide's path s with μ_s; a rocking output's angle ψ_5 from position 0 (the kinematics sheet's
     # letter for a rocker's angle, graphic.diagrams.angle_symbol) with μ_ψ
-    if st.output.kind == "slide":
+    if point is not None:
+        sym, what, mu_sym = "s", f"s_{{{point}}}", "μ_s"
+    elif st.output.kind == "slide":
         sym, what, mu_sym = "s", f"s_{{{st.output.name}}}", "μ_s"
     else:
         from graphplan.graphic.diagrams import angle_symbol
@@ -976,6 +1006,9 @@ def resistance_record(t: Turn, width: float = 180.0, height: float = 60.0, lang:
     force = np.abs(sum(ld.couple for ld in ext)) if couple else np.abs(sum(ld.force for ld in ext))
     f_unit, f_mu = (unit("N·m", lang), "μ_M") if couple else (unit("N", lang), "μ_P")
     work = np.asarray(t.ks.working, dtype=bool)
+    if point is not None:                  # the piston's own strokes (kinetostatics.own_stroke)
+        from graphplan.exact.kinetostatics import force_working
+        work = np.asarray(force_working(st, point, t.ks.kin.phi_deg, work), dtype=bool)
     n = len(force)
     reach = float(path[-1]) or 1.0
     mu_s = standard_scale(reach / width)
@@ -1120,6 +1153,10 @@ def records(t: Turn, k: float = 1.0, lang: str = "uk", k_hodographs: float | Non
     res = resistance_record(t, 160.0 * k, 60.0, lang=lang)
     if res is not None:
         out["resistance"] = res
+        for p in other_pistons(t):          # one diagram per loaded piston (stop 58's V-twin)
+            more = resistance_record(t, 160.0 * k, 60.0, lang=lang, point=p)
+            if more is not None:
+                out[f"resistance {p}"] = more
     for key in slider_reactions(t):
         out[f"reaction {key}"] = reaction_record(t, key, 180.0 * k, 60.0, lang=lang)
     for key in t.revolute:      # each hodograph that draws a jump says what the dashes are

@@ -2222,7 +2222,12 @@ def reaction_why(fp: ForcePlans, key: str, lang: str) -> str:
         return word("fs why detail", lang, sym=sym, mm=num(measure(side.mm, fp.precision) if side else 0.0, lang),
                     n=known, half=num(fp.precision / 2, lang))
     if m.mm < SHORT_MM:
-        return word("fs why short", lang, sym=sym, mm=num(m.mm, lang))
+        # what a short side misses by, said as the kinematics sheet says it (stop 58: FRC56_PUMP's R03
+        # flagged "a short vector" alone): half a division's share of it and the rounded knowns it closes
+        known = sum(1 for s in gp.sides if s.role == "known")
+        share = fixed(100.0 * fp.precision / 2 / m.mm, lang, 0) if m.mm > 0 else "—"
+        return word("fs why short", lang, sym=sym, mm=num(m.mm, lang), share=share, n=known,
+                    half=num(fp.precision / 2, lang))
     if len(gp.lines) >= 2:
         (a1, b1), (a2, b2) = gp.lines[-2:]
         angle = crossing_angle(b1 - a1, b2 - a2)

@@ -188,6 +188,50 @@ def working_stroke(st: Study, phi_deg: Array) -> Array:
     return ((phi - start) * sense) % 360.0 < length       # from the stroke's first extreme, its turn
 
 
+def own_stroke(st: Study, point: str) -> tuple[float, float] | None:
+    """The working stroke (the crank angle of its first extreme, its crank turn in the crank's sense,
+    deg) of a force's own slide when that is not the output's: a piston on a frame guide of its own
+    whose dead centres are not the output's (stop 58: a V-twin compressor's piston C, its guide 60°
+    from B's, has its dead centres 60° of crank turn from B's — its gas force on B's working stroke
+    acted over C's suction half and back). The scene's ``positions.working_stroke`` rule read on that
+    slide's own coordinate. None where the force takes the output's stroke: the output's own point,
+    a point that slides on no frame guide, or a slide whose working stroke is the output's (an
+    opposed twin's second piston, its dead centres the first's, works while the first is idle: its own)."""
+    from graphplan.exact.positions import Output, find_extremes, point_slider
+    mech = st.mech
+    if st.output.kind == "slide" and st.output.name == point:
+        return None
+    # (a Study made from another by dataclasses.replace shares its memo: keyed by what the stroke reads)
+    key = ("own stroke", point, mech.working_stroke, st.extremes, tuple(sorted(mech.frame.items())),
+           mech.crank.length)
+    if key in st.memo:
+        return st.memo[key]
+    out = None
+    slider = point_slider(mech, point)
+    if slider is not None and mech.guides[mech.links[slider].slides_on].body == FRAME:
+        own = Output("slide", point)
+        ext = find_extremes(mech, st.structure, own)
+        if len(ext) >= 2:
+            out = working_start(mech, ext, own.value(solve(mech, st.structure, list(ext))))
+            if len(st.extremes) >= 2:       # the very stroke the output's is: the output's
+                start, length = working_start(mech, st.extremes, st.output.value(solve(mech, st.structure,
+                                                                                      list(st.extremes))))
+                if abs((out[0] - start + 180.0) % 360.0 - 180.0) < 1e-6 and abs(out[1] - length) < 1e-6:
+                    out = None
+    st.memo[key] = out
+    return out
+
+
+def force_working(st: Study, point: str, phi_deg: Array, working: Array) -> Array:
+    """Where a force at ``point`` is on its working stroke: its own slide's (``own_stroke``), else
+    the output's (``working``)."""
+    own = own_stroke(st, point)
+    if own is None:
+        return working
+    start, length = own
+    return ((np.asarray(phi_deg, dtype=float) - start) * np.sign(st.mech.omega1)) % 360.0 < length
+
+
 def force_link(mech: Mechanism, point: str) -> str:
     """The link an external force at ``point`` acts on: the slider that carries the point (one on a
     frame guide first) — the ram, not the rod, for a force at their common joint, and not the rod of
@@ -260,7 +304,8 @@ def loads(st: Study, kin: Kinematics, working: Array) -> list[Load]:
         if f.stroke == "both":
             active = np.ones(zero.shape, dtype=bool)
         else:
-            active = working if f.stroke == "working" else ~working
+            mine = force_working(st, f.point, kin.phi_deg, working)
+            active = mine if f.stroke == "working" else ~mine
         if f.direction == "oppose":
             unit = -_motion_direction(st, name, local, kin.phi_deg, v)
         else:

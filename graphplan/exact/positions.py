@@ -51,6 +51,7 @@ class Study:
     t0: dict[str, float]            # slide coordinates at position 0
     warnings: list[str] = field(default_factory=list)   # cycle-level warnings (near-locking groups)
     warnings_uk: list[str] = field(default_factory=list)  # the same in Ukrainian
+    memo: dict = field(default_factory=dict, repr=False, compare=False)   # kinetostatics.own_stroke's
 
     def says(self, lang: str) -> list[str]:
         """The warnings in ``lang`` (util.words)."""

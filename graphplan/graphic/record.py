@@ -30,6 +30,9 @@ DASHED_ROLES = {"axis": "dashdot", "trajectory": "dashdot", "projection": "dashe
 LAYERS = ("frame", "mechanism", "construction", "vectors", "labels", "diagrams", "tables")
 
 
+POINT_INK = {"joint": 1.0 + 0.175, "dot": 0.6 + 0.175}    # a point mark's ink radius, mm (drawing.svg)
+
+
 @dataclass(frozen=True)
 class Primitive:
     """One drawn thing. ``kind``: segment, vector (arrow at the end), polyline, polygon, circle,
@@ -81,6 +84,13 @@ class Primitive:
             return min(ax, bx), min(ay, by), max(ax, bx), max(ay, by)
         xs = [p[0] for p in self.points]
         ys = [p[1] for p in self.points]
+        if self.kind == "point":
+            # the mark as drawn (drawing.svg): a pair's ring r 1 mm, a dot r 0.6 mm, with half its
+            # 0.35 mm stroke — COULISSE8's A1 force scheme set its top joint B flush with the field
+            # (its box a bare point), the ring 1 mm over the field's edge
+            r = POINT_INK["joint" if self.role == "joint" else "dot"]
+            (cx, cy) = self.points[0]
+            return cx - r, cy - r, cx + r, cy + r
         if self.kind == "circle" or (self.kind == "arc" and (self.angles[1] - self.angles[0]) % 360.0 == 0):
             (cx, cy), r = self.points[0], self.radius
             return cx - r, cy - r, cx + r, cy + r

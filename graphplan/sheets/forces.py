@@ -121,7 +121,7 @@ def idle_words(st: Study, phi: float, lang: str) -> str:
     (the tables give it)."""
     import numpy as np
 
-    from graphplan.exact.kinetostatics import loads, working_stroke
+    from graphplan.exact.kinetostatics import force_working, loads, working_stroke
     from graphplan.util.words import force_symbol
     mech = st.mech
     bound = [f"P_{f.point}" for f in mech.forces if f.stroke != "both"]
@@ -131,8 +131,11 @@ def idle_words(st: Study, phi: float, lang: str) -> str:
     at = np.atleast_1d(float(phi))
     working = np.atleast_1d(working_stroke(st, at))
     on_work = bool(working[0])
-    if on_work and all(f.stroke == "working" for f in mech.forces if f.stroke != "both") and all(
-            m.stroke == "working" for m in mech.moments if m.stroke != "both"):
+    # each piston's force on its own stroke (kinetostatics.force_working: a V-twin's P_C may be idle
+    # while the output's P_B works)
+    forces_work = all(f.stroke == "working" and bool(np.atleast_1d(force_working(st, f.point, at, working))[0])
+                      for f in mech.forces if f.stroke != "both")
+    if on_work and forces_work and all(m.stroke == "working" for m in mech.moments if m.stroke != "both"):
         return ""
     acting = [ld for ld in loads(st, st.solve(at), working) if ld.kind == "external"]
     said = []
@@ -364,7 +367,8 @@ class ForceDrafter:
         def make():
             fp = self.fp()
             ext = any(ld.kind == "external" for ld in self.turn.ks.loads)
-            charts = (["moment"] + (["resistance"] if ext else [])
+            more = [f"resistance {p}" for p in forcecharts.other_pistons(self.turn)] if ext else []
+            charts = (["moment"] + (["resistance"] if ext else []) + more
                       + [f"reaction {k}" for k in forcecharts.slider_reactions(self.turn)])
             return {"scheme": ["mechanism"], "groups": [f"group {gp.label}" for gp in fp.groups],
                     "forces": [f"polygon {gp.label}" for gp in fp.groups], "acceleration": ["acceleration plan"],
@@ -390,10 +394,20 @@ def _captions(dr: ForceDrafter, mu: dict[str, float], lang: str) -> dict[str, li
            "acceleration": [(f"{w('acceleration')}, {w('position')}",
                              f"{format_scale('mu_a', mu['acceleration'], lang)},  {at}")],
            "lever": [(_caption("lever", lang), "")],                           # μv under the lever itself
-           "charts": [(w("resistance moment") if n == "resistance" and moment_only else _caption(n, lang), "")
-                      for n in names["charts"]],
+           "charts": [(w("resistance moment") if n == "resistance" and moment_only else
+                       _resistance_caption(dr, n, lang) or _caption(n, lang), "") for n in names["charts"]],
            "hodographs": [(_caption(n, lang), "") for n in names["hodographs"]]}
     return out
+
+
+def _resistance_caption(dr: ForceDrafter, name: str, lang: str) -> str | None:
+    """A resistance diagram's caption naming its force where there is one per piston (stop 58's
+    V-twin: «… P_B за хід», «… P_C за хід»); None otherwise (the one diagram's usual caption)."""
+    kind, _, point = name.partition(" ")
+    names = dr.names()["charts"]
+    if kind != "resistance" or not any(n.startswith("resistance ") for n in names):
+        return None
+    return word("fs resistance of", lang, p=force_symbol(f"P_{point or dr.st.output.name}", lang))
 
 
 def _tables(dr: ForceDrafter, mu: dict[str, float], lang: str, factor: float) -> list[tuple[str, Record]]:

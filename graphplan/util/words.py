@@ -248,6 +248,7 @@ WORDS: dict[str, tuple[str, str]] = {
     "fs mechanism": ('Схема механізму з прикладеними силами', 'The mechanism with the applied forces'),
     "fs reaction": ('Реакція стояка на повзун', 'Reaction of the frame on the slider'),
     "fs resistance": ('Діаграма сили корисного опору за хід', 'Resistance force over the stroke'),
+    "fs resistance of": ('Діаграма сили корисного опору {p} за хід', 'Resistance force {p} over the stroke'),
     "fs resistance moment": ('Діаграма моменту корисного опору за хід', 'Resistance moment over the swing'),
     "fs jump": ("пунктир — стрибок від {what}", "dashed: the jump due to {what}"),
     "fs coincide": ("Годографи: номер «0–2» — точки, що збігаються з точністю лінійки 0,5 мм",
@@ -734,7 +735,10 @@ WORDS: dict[str, tuple[str, str]] = {
                       "округлення відомих сил на плані ({n} сил по ±{half} мм)",
                       "{sym}: shorter than a division on its plan ({mm} mm), read off detail I; its error is the "
                       "known forces rounded on the plan ({n} forces, ±{half} mm each)"),
-    "fs why short": ("{sym}: короткий вектор на плані ({mm} мм)", "{sym}: a short vector on its plan ({mm} mm)"),
+    "fs why short": ("{sym}: короткий вектор на плані ({mm} мм): пів поділки лінійки — {share} % його, а як сторона, "
+                     "що замикає план, він несе округлення відомих сил ({n} сил по ±{half} мм)",
+                     "{sym}: a short vector on its plan ({mm} mm): half a ruler division is {share} % of it, and as "
+                     "the side closing the plan it carries the known forces' rounding ({n} forces, ±{half} mm each)"),
     "fs why angle": ("{sym}: лінії реакцій перетинаються під малим кутом ({angle}°)",
                      "{sym}: the reactions' lines cross at a small angle ({angle}°)"),
     "fs why pa": ("{sym}: короткий відрізок pa на важелі ({mm} мм)", "{sym}: a short pa on the lever ({mm} mm)"),
