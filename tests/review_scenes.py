@@ -7581,7 +7581,8 @@ LINK_DYN57 = LINK57   # the same scene (the lead's link57.toml), checked by dyn5
 LINK58 = '''# Stop 58 (the lead's check): a V-twin compressor: one crank O1A drives two connecting rods AB and AC
 # (both pinned at the crank pin A) and two pistons B and C on guides through O1 at 60° and 120° (a 60° V):
 # I(0-1) -> II(2-3) ВВП -> II(4-5) ВВП; the crank turns clockwise; the gas forces act on the pistons'
-# compression strokes (towards O1); masses by length; dynamics to a 1500-rpm motor, δ = 1/40.
+# compression strokes (outwards, towards the cylinder heads: working_stroke = "to_max"); masses by length;
+# dynamics to a 1500-rpm motor, δ = 1/40.
 title = "V-подібний двоциліндровий компресор"
 title_en = "V-twin compressor"
 designation = "ТММ.КП.58.000"
@@ -7596,8 +7597,8 @@ organisation = "НУБіП України"
 O1 = [0, 0]
 
 [frame.guides]
-x = { through = [0, 0], angle_deg = 60, title_uk = "лівого циліндра", title_en = "of the left cylinder" }
-y = { through = [0, 0], angle_deg = 120, title_uk = "правого циліндра", title_en = "of the right cylinder" }
+x = { through = [0, 0], angle_deg = 60, title_uk = "правого циліндра", title_en = "of the right cylinder" }
+y = { through = [0, 0], angle_deg = 120, title_uk = "лівого циліндра", title_en = "of the left cylinder" }
 
 [crank]
 name = "O1A"
@@ -7639,6 +7640,7 @@ mass = 2.5
 [positions]
 count = 12
 start = "working"
+working_stroke = "to_max"
 accel = [3]
 force_phi_deg = 45
 output = "B"

@@ -73,9 +73,9 @@ def _dot(a, b):
     return (a * np.conj(b)).real
 
 
-# the scene's default "slow" stroke of a centred slider is a tie (180° each); the program takes the one
-# from the outer dead centre, the piston moving in towards O1 — each piston on its own
-VTWIN = Twin(r=0.05, l=0.2, s=0.35, rpm=-720, piston=2.5, load=900.0, guides={"B": 60.0, "C": 120.0}, inwards=True)
+# the compressor's working stroke is each piston's compression, outwards to its cylinder head
+# (working_stroke = "to_max" along each cylinder's own axis) — each piston on its own
+VTWIN = Twin(r=0.05, l=0.2, s=0.35, rpm=-720, piston=2.5, load=900.0, guides={"B": 60.0, "C": 120.0}, inwards=False)
 BOXER = Twin(r=0.06, l=0.24, s=0.3, rpm=600, piston=3.0, load=1200.0, guides={"B": 0.0, "C": 180.0}, inwards=False)
 P, R = VTWIN.load, VTWIN.r
 
@@ -110,12 +110,13 @@ def test_each_piston_takes_its_gas_force_on_its_own_working_stroke(which, reques
 
 @pytest.mark.parametrize("which", ["link58", "boxer"])
 def test_the_balancing_moment_agrees_with_virtual_power_over_the_turn(which, request):
-    """M_b at the force position (LINK58: crank 15°, both pistons loaded, −83.32 N·m) and round the turn."""
+    """M_b at the force position (LINK58: crank 195°, 45° clockwise from B's inner dead centre, both
+    pistons compressing) and round the turn."""
     from graphplan.exact.kinetostatics import analyse, at_scene_angle
     st, twin = request.getfixturevalue(which), {"link58": VTWIN, "boxer": BOXER}[which]
     phi0 = at_scene_angle(st)
     if which == "link58":
-        assert abs(phi0 - 15.0) < 1e-9 and abs(twin.balancing_moment(phi0) - (-83.32)) < 0.01
+        assert abs(phi0 - 195.0) < 1e-9 and all(twin.working(name, phi0) for name in twin.guides)
     phi = np.r_[phi0, np.arange(0.0, 360.0, 10.0) + 2.5]
     got = analyse(st, phi).balancing
     want = np.array([twin.balancing_moment(f) for f in phi])
@@ -155,10 +156,12 @@ def test_one_resistance_diagram_per_piston_each_over_its_own_path(link58):
 
 def test_the_force_positions_note_names_a_piston_idle_while_the_output_works(link58):
     """The note said nothing where the output B works (every force bound to the working stroke) though
-    C may be on its own idle stroke there: at crank 270° B draws 900 N and C none — said; at the
-    force position (15°) both work and the tables say it all."""
+    C may be on its own idle stroke there: at crank 100° B draws 900 N and C none, at 270° the other
+    way round — said; at the force position (crank 195°: 45° clockwise from B's inner dead centre at
+    240°, where its compression starts) both work and the tables say it all."""
     from graphplan.sheets.forces import idle_words
-    assert idle_words(link58, 15.0, "en") == ""
+    assert all(VTWIN.working(name, 195.0) for name in VTWIN.guides)
+    assert idle_words(link58, 195.0, "en") == ""
     for phi in (270.0, 100.0):
         on = {name: VTWIN.working(name, phi) for name in VTWIN.guides}
         said = idle_words(link58, phi, "en")
