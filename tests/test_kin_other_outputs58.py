@@ -66,3 +66,20 @@ def test_the_lead_v_twin_note_names_c_sixty_degrees_earlier():
     kin = st.solve(phi)
     tb, tc = kin.slides["B"].t, kin.slides["C"].t
     assert np.allclose(tc, np.roll(tb, -2), atol=1e-12)           # C at position i is B at i + 2
+
+
+# -- the English apostrophe (YOKE11's English notes: «lab's» read as two words) ----------------------------
+
+@pytest.mark.parametrize("size", [3.5, 4.747])
+def test_the_english_apostrophe_reads_as_part_of_its_word(size):
+    """«the lab's 5 %», «the crank's», «the link's» rendered and grouped into words as overprint.py and
+    tests/inkcheck group ink (the 0.8-mm closing at 4 px/mm): as many words as without the apostrophes,
+    wherever the text falls on the pixel grid. Set at the font's advances, the apostrophe after b (its
+    ink right of the stem only the bowl, at the x-height) stood 0.75 mm across and 1 mm above it and
+    read as a mark of its own inside «lab»'s box at 4.7-mm letters (YOKE11's English kinematics notes)."""
+    from test_cam56 import _words
+    for dx in (0.0, 0.1, 0.2):
+        for dy in (0.0, 0.1, 0.2):
+            assert _words("lab's crank's link's", size, dx, dy) == _words("labs cranks links", size, dx, dy), (dx, dy)
+    assert _words("b'", size, 0.0, 0.0, closing=False) == 2         # tucked in over the bowl, not touching
+    assert _words("b's", size, 0.0, 0.0, closing=False) == 3
