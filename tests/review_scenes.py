@@ -7721,3 +7721,89 @@ planets = 3
 module = 0.003
 rpm = 1450
 '''
+
+
+# kin58 (stop 58's own kinematics mechanism): a two-slider mechanism of a double pump — an axial crank-slider O1AB and,
+# from the point C of its rod, a link CD to a plunger D on a vertical guide; the diagrams of B, D in the tables.
+KIN58_TWOSLIDER = '''# kin58 (stop 58's own): a two-slider mechanism of a double pump (a textbook six-bar): an axial crank-slider
+# O1AB, and from the point C of its connecting rod a link CD to a second plunger D on a vertical guide:
+# I(0-1) -> II(2-3) ВВП -> II(4-5) ВВП; the crank turns counter-clockwise; the diagrams of B (the output),
+# D's motion in the tables and plans.
+title = "Двоповзунний механізм здвоєного насоса"
+title_en = "Two-slider mechanism of a double pump"
+designation = "ТММ.КП.58.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-58"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+
+[frame.guides]
+x = { through = [0, 0], angle_deg = 0, title_uk = "повзуна B", title_en = "of the slider B" }
+y = { through = [0.16, 0], angle_deg = 90, title_uk = "плунжера D", title_en = "of the plunger D" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 240
+direction = "ccw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.26
+shape = { C = [0.1, 0.05] }
+points = { S2 = [0.13, 0.0] }
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "x"
+mass = 3
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.16
+points = { S4 = 0.5 }
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "y"
+mass = 2
+
+[positions]
+count = 12
+start = "working"
+accel = [2]
+force_phi_deg = 60
+output = "B"
+
+[loads]
+g = 9.81
+mass_per_length = 25
+inertia_factor = 0.1
+
+[[force]]
+point = "B"
+magnitude = 600
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 1000
+'''

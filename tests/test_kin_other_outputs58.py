@@ -83,3 +83,31 @@ def test_the_english_apostrophe_reads_as_part_of_its_word(size):
             assert _words("lab's crank's link's", size, dx, dy) == _words("labs cranks links", size, dx, dy), (dx, dy)
     assert _words("b'", size, 0.0, 0.0, closing=False) == 2         # tucked in over the bowl, not touching
     assert _words("b's", size, 0.0, 0.0, closing=False) == 3
+
+
+def test_the_two_slider_pumps_plunger_against_its_closed_form():
+    """kin58's own mechanism (KIN58_TWOSLIDER): D's velocity at the twelve positions from the solver the
+    sheet's tables are checked against equals the closed form — B = A + √(l² − y_A²) on the axis, C on the
+    rod 0.1 m along and 0.05 m across it, D on x = 0.16 m at C + √(CD² − (0.16 − x_C)²) — differentiated
+    numerically; and the note sends the reader to the tables for D (no phase repeats B's stroke)."""
+    from tests.review_scenes import KIN58_TWOSLIDER
+    st = scene_study(KIN58_TWOSLIDER)
+    r, l, cd, w = 0.06, 0.26, 0.16, 240 * 2 * math.pi / 60
+
+    def y_d(th):
+        ax, ay = r * math.cos(th), r * math.sin(th)
+        bx = ax + math.sqrt(l * l - ay * ay)
+        ux, uy = (bx - ax) / l, -ay / l
+        cx, cy = ax + 0.1 * ux - 0.05 * uy, ay + 0.1 * uy + 0.05 * ux
+        return cy + math.sqrt(cd * cd - (0.16 - cx) ** 2)
+    phi = st.positions()
+    kin = st.solve(phi)
+    h = 1e-6
+    expected = [(y_d(math.radians(p) + h) - y_d(math.radians(p) - h)) / (2 * h) * w for p in phi]
+    assert np.allclose(kin.slides["D"].v, expected, atol=1e-6)
+    assert phase_shift(st, "B", "D") is None
+
+    class Plans:
+        positions = [type("P", (), {"acceleration": object()})()]
+    uk, = other_outputs(st, Plans, "uk")
+    assert "v_{D}, a_{D}" in uk
