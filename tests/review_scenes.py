@@ -7927,3 +7927,231 @@ magnitude = 1200
 stroke = "working"
 direction = "oppose"
 '''
+
+
+# compression strokes (towards O1); masses by length; dynamics to a 1500-rpm motor, δ = 1/40.
+title = "V-подібний двоциліндровий компресор"
+title_en = "V-twin compressor"
+designation = "ТММ.КП.58.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-58"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+
+[frame.guides]
+x = { through = [0, 0], angle_deg = 60, title_uk = "лівого циліндра", title_en = "of the left cylinder" }
+y = { through = [0, 0], angle_deg = 120, title_uk = "правого циліндра", title_en = "of the right cylinder" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.05
+rpm = 720
+direction = "cw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.2
+points = { S2 = 0.35 }
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "x"
+mass = 2.5
+
+[[link]]
+name = "AC"
+number = 4
+joints = ["A", "C"]
+length = 0.2
+points = { S4 = 0.35 }
+
+[[link]]
+name = "C"
+number = 5
+joints = ["C"]
+slides_on = "y"
+mass = 2.5
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 45
+output = "B"
+
+[loads]
+g = 9.81
+mass_per_length = 20
+inertia_factor = 0.1
+
+[[force]]
+point = "B"
+magnitude = 900
+stroke = "working"
+direction = "oppose"
+
+[[force]]
+point = "C"
+magnitude = 900
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.025
+efficiency = 0.8
+synchronous_rpm = 1500
+'''
+
+
+# Stop 58: the lead's stop-58 cam: a rocking roller follower, ccw, no far dwell (trapezoidal rise 150°, cycloidal return 150°) (/work/lead/s58/cam58.toml)
+CAM58 = '''# Stop 58 (the lead's check): a ROCKING roller follower, the cam counter-clockwise, NO far dwell: a
+# trapezoidal rise of 150° straight into a cycloidal return of 150°, a near dwell of 60°; a swing of 25°,
+# 10 divisions, [ϑ] 40°/45°.
+title = "Кулачковий механізм з коромисловим роликовим штовхачем (перевірка 58)"
+title_en = "Cam with a rocking roller follower (check 58)"
+designation = "ТММ.КМ.58.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-58"
+organisation = "НУБіП України"
+
+[cam]
+follower = "rocking"
+swing_deg = 25
+arm = 0.09
+centre_distance = 0.11
+roller_radius = 0.01
+phases_deg = { rise = 150, dwell_far = 0, return = 150, dwell_near = 60 }
+laws = { rise = "trapezoidal", return = "cycloidal" }
+pressure_angle_deg = { rise = 40, return = 45 }
+rpm = 150
+direction = "ccw"
+divisions = 10
+'''
+
+
+# Stop 58: the lead's stop-58 gears: a pair 9/35 "auto", m = 4 mm, and a type-B train for u1H = 14, K = 3 (/work/lead/s58/gears58.toml)
+GEARS58 = '''# Stop 58 (the lead's check): a pair 9/35 "auto" (a 9-tooth pinion: a large shift against undercut, the
+# tip's thickness to check), m = 4 mm, and a two-row type-B train chosen for u1H = 14, K = 3, 1450 rpm.
+title = "Зубчаста передача 9/35 і дворядний планетарний редуктор (перевірка 58)"
+title_en = "A gear pair 9/35 and a two-row planetary reducer (check 58)"
+designation = "ТММ.ЗП.58.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-58"
+organisation = "НУБіП України"
+
+[gears]
+z = [9, 35]
+module = 0.004
+shifts = "auto"
+
+[planetary]
+type = "B"
+ratio = 14
+planets = 3
+module = 0.003
+rpm = 1450
+'''
+
+
+# kin58 (stop 58's own kinematics mechanism): a two-slider mechanism of a double pump — an axial crank-slider O1AB and,
+# from the point C of its rod, a link CD to a plunger D on a vertical guide; the diagrams of B, D in the tables.
+KIN58_TWOSLIDER = '''# kin58 (stop 58's own): a two-slider mechanism of a double pump (a textbook six-bar): an axial crank-slider
+# O1AB, and from the point C of its connecting rod a link CD to a second plunger D on a vertical guide:
+# I(0-1) -> II(2-3) ВВП -> II(4-5) ВВП; the crank turns counter-clockwise; the diagrams of B (the output),
+# D's motion in the tables and plans.
+title = "Двоповзунний механізм здвоєного насоса"
+title_en = "Two-slider mechanism of a double pump"
+designation = "ТММ.КП.58.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-58"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+
+[frame.guides]
+x = { through = [0, 0], angle_deg = 0, title_uk = "повзуна B", title_en = "of the slider B" }
+y = { through = [0.16, 0], angle_deg = 90, title_uk = "плунжера D", title_en = "of the plunger D" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 240
+direction = "ccw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.26
+shape = { C = [0.1, 0.05] }
+points = { S2 = [0.13, 0.0] }
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "x"
+mass = 3
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.16
+points = { S4 = 0.5 }
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "y"
+mass = 2
+
+[positions]
+count = 12
+start = "working"
+accel = [2]
+force_phi_deg = 60
+output = "B"
+
+[loads]
+g = 9.81
+mass_per_length = 25
+inertia_factor = 0.1
+
+[[force]]
+point = "B"
+magnitude = 600
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 1000
+'''

@@ -383,7 +383,7 @@ def kern(prev: str, c: str, size: float) -> float:
     the degree sign reads as a stray mark. A small letter after Г, Т or T tucks under the bar,
     its ink beginning ``UNDER_BAR`` inside the bar's end (pairs osifont does not kern). Nothing otherwise (the font sets text by its
     advances). A sign (+ = ± ×) touching a letter stands ``sign_gap`` apart from it."""
-    if APOSTROPHE in (prev, c) and prev.isalpha() != c.isalpha():
+    if (prev in APOSTROPHES or c in APOSTROPHES) and prev.isalpha() != c.isalpha():
         return _apostrophe_kern(prev, c, size)
     if prev in SIGNS or c in SIGNS:
         return sign_gap(prev, c) * em(size)
@@ -414,18 +414,34 @@ APOSTROPHE_GAP = 0.03    # ems: … its ink this far across from a small letter'
 #  at 0.05 em it still stood apart at 10 of 75 placings on the 4-px/mm grid, at 0.04 and less at none)
 
 
+APOSTROPHES = APOSTROPHE + "'"   # … and the English one (the lab's, the crank's), typed as ASCII
+OPEN_RIGHT = "bhk"  # ascenders whose ink right of the stem ends at the x-height: an apostrophe after them
+#  stands over that bowl, shoulder or arm as over a small letter. Set as a capital's, the YOKE11 English
+#  notes' «lab's» (4.7-mm letters) left it 0.75 mm across and 1 mm above b's bowl: overprint.py's
+#  0.8-mm closing took it for a mark of its own inside «lab»'s box (review 58)
+OPEN_TUCK = 0.08    # ems: over such a letter the apostrophe's ink begins this far inside its box's right: b's
+#  bowl curves away from its box's corner under it (tucked only to APOSTROPHE_GAP, «lab's» at 4.7-mm letters
+#  still split at 3 of 9 placings on the 4-px/mm grid; at 0.07 em and more at none, its ink still apart)
+
+
 def _apostrophe_kern(prev: str, c: str, size: float) -> float:
     """``kern`` of an apostrophe after a letter or of a letter after it: tucked in (negative) until the
     two inks stand APOSTROPHE_GAP apart across — where the letter's ink stays under the apostrophe's
-    (a small letter; a capital or an ascender's top would meet it: left as set)."""
+    (a small letter, or ``OPEN_RIGHT``'s before it; a capital or an ascender's top would meet it: left
+    as set)."""
     m = _metrics()
     a, b = m["boxes"].get(prev), m["boxes"].get(c)
     if a is None or b is None:
         return 0.0
-    mark, letter = (b, a) if c == APOSTROPHE else (a, b)
-    if letter[3] >= mark[1]:
+    mark, letter = (b, a) if c in APOSTROPHES else (a, b)
+    top = letter[3]
+    if c in APOSTROPHES and prev in OPEN_RIGHT and "n" in m["boxes"]:
+        top = m["boxes"]["n"][3]               # the bowl's (shoulder's, arm's) height: the x-height
+    if top >= mark[1]:
         return 0.0
     gap = m["advance"].get(prev, m["missing"]) - a[2] + b[0]
+    if top < letter[3]:                        # over a bowl's curve: its box's corner is not its ink's
+        gap += OPEN_TUCK
     return -max(gap - APOSTROPHE_GAP, 0.0) * em(size)
 
 

@@ -965,6 +965,52 @@ def short_poles(st: Study, doc: dict, lang: str, precision: float) -> list[str]:
     return out
 
 
+def phase_shift(st: Study, a: str, b: str, grid: int = 720) -> float | None:
+    """The crank turn Δ (deg, in (−180, 180]) with t_b(φ) − t̄_b = ±(t_a(φ + Δ) − t̄_a) over the whole cycle
+    (φ counted in the crank's sense): ``b`` slides as ``a`` does, Δ earlier (Δ > 0) or −Δ later — a
+    V-twin's second piston (review 58: the diagrams drawn for B only, the sheet silent on C); None
+    when no turn on a ``grid``-step circle makes the two strokes one (different rods, offsets)."""
+    import numpy as np
+    turn = np.arange(grid) * 360.0 / grid
+    kin = st.solve(np.mod(st.phi0 + turn * np.sign(st.mech.omega1), 360.0))
+    ta, tb = (np.asarray(kin.slides[n].t, dtype=float) for n in (a, b))
+    ta, tb = ta - ta.mean(), tb - tb.mean()
+    scale = max(float(np.ptp(ta)), float(np.ptp(tb)), 1e-300)
+    for k in range(grid):
+        shifted = np.roll(ta, -k)                  # shifted[j] = t_a at turn j + k
+        if min(np.max(np.abs(tb - shifted)), np.max(np.abs(tb + shifted))) < 1e-7 * scale:
+            d = k * 360.0 / grid
+            return d - 360.0 if d > 180.0 else d
+    return None
+
+
+def other_outputs(st: Study, plans, lang: str) -> list[str]:
+    """A line for each other slider on a frame guide than the diagrams' output: whose diagrams the sheet
+    draws, and where the other's motion is read — its diagrams those of the output shifted by the phase
+    ``phase_shift`` finds (a V-twin's pistons), else the tables and the plans (review 58)."""
+    from graphplan.exact.positions import point_slider
+    from graphplan.model.mechanism import FRAME
+    out = st.output
+    if out.kind != "slide":
+        return []
+    mech = st.mech
+    others = [next(iter(link.local)) for name, link in mech.links.items()
+              if link.slides_on is not None and mech.guides[link.slides_on].body == FRAME
+              and next(iter(link.local)) != out.name]
+    lines = []
+    for c in dict.fromkeys(others):
+        if point_slider(mech, c) is None:
+            continue
+        shift = phase_shift(st, out.name, c)
+        t = plan_tables(plans)
+        if shift is None or abs(shift) < 1e-9:
+            lines.append(word("kin other_drawn", lang, b=out.name, c=c, t=t))
+        else:
+            lines.append(word("kin other_lead" if shift > 0 else "kin other_lag", lang, b=out.name, c=c,
+                              deg=fixed(abs(shift), lang, 0 if abs(shift - round(shift)) < 1e-9 else 1), t=t))
+    return lines
+
+
 def notes_lines(st: Study, plans, diag, lang: str, p: float) -> list[str]:
     """The notes' lines: mobility, structure, scales, precision, the largest errors, the signs."""
     from graphplan.graphic.scales import format_scale
@@ -996,5 +1042,5 @@ def notes_lines(st: Study, plans, diag, lang: str, p: float) -> list[str]:
     rows = printed_readings(diag, doc, lang, p)      # the note names the δ Table n prints
     printed = {f"{q}_at": np.array([np.nan if r[f"delta_{q}"] is None else r[f"delta_{q}"] for r in rows])
                for q in ("v", "a")}
-    return lines_of(notes(st, scales, extra + sheet_notes(diag, lang, readings_number(st, plans, diag), printed),
-                          lang))
+    said = sheet_notes(diag, lang, readings_number(st, plans, diag), printed)
+    return lines_of(notes(st, scales, extra + said[:1] + other_outputs(st, plans, lang) + said[1:], lang))

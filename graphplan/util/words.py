@@ -312,6 +312,22 @@ WORDS: dict[str, tuple[str, str]] = {
                                 'діаграмах; таблиці {t} дають модулі |v|, |a| (довжина вектора × μ)',
                                 'Signs of s, v, a here (the "plan" rows too): +\u00a0away from position 0, against the '
                                 'guide, as on the diagrams; Tables {t} give the magnitudes |v|, |a| (a vector\'s length × μ)'),
+    "kin other_lead": ('Діаграми точки {c} не креслено: {c} рухається, як {b}, з випередженням на {deg}° '
+                       '(s_{{{c}}}(φ)\u00a0=\u00a0s_{{{b}}}(φ\u00a0+\u00a0{deg}°)) — її діаграми ті самі, зсунуті на {deg}° ліворуч; '
+                       'v_{{{c}}}, a_{{{c}}} — у таблицях {t}',
+                       '{c}\'s diagrams are not drawn: {c} moves as {b} does, {deg}° earlier '
+                       '(s_{{{c}}}(φ)\u00a0=\u00a0s_{{{b}}}(φ\u00a0+\u00a0{deg}°)) — its diagrams are the same shifted {deg}° to the left; '
+                       'v_{{{c}}}, a_{{{c}}} are in Tables {t}'),
+    "kin other_lag": ('Діаграми точки {c} не креслено: {c} рухається, як {b}, із запізненням на {deg}° '
+                      '(s_{{{c}}}(φ)\u00a0=\u00a0s_{{{b}}}(φ\u00a0−\u00a0{deg}°)) — її діаграми ті самі, зсунуті на {deg}° праворуч; '
+                      'v_{{{c}}}, a_{{{c}}} — у таблицях {t}',
+                      '{c}\'s diagrams are not drawn: {c} moves as {b} does, {deg}° later '
+                      '(s_{{{c}}}(φ)\u00a0=\u00a0s_{{{b}}}(φ\u00a0−\u00a0{deg}°)) — its diagrams are the same shifted {deg}° to the right; '
+                      'v_{{{c}}}, a_{{{c}}} are in Tables {t}'),
+    "kin other_drawn": ('Діаграми — для вихідної точки {b} завдання; точки {c}: v_{{{c}}}, a_{{{c}}} — у таблицях {t} '
+                        'і на планах',
+                        'The diagrams are of the task\'s output {b}; of {c}: v_{{{c}}}, a_{{{c}}} in Tables {t} '
+                        'and on the plans'),
     "kin dash": ('«—» у таблицях: мм для ε немає; δ не обчислено, де вектор коротший за півподілки лінійки або '
                  'точне значення ≈ 0',
                  '"—" in the tables: ε has no mm; δ not computed where a vector is under half a ruler division or '
