@@ -139,52 +139,6 @@ def tree(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C, split_colu
     return Row([Stack([P] + vg), Stack([D] + ag + [C], flush=True)], flush=True)
 
 
-def _row(sizes: list[tuple[float, float]]) -> tuple[float, float]:
-    """``extent`` of a ``Row`` of children of these sizes (the same sums, to the bit)."""
-    if not sizes:
-        return 0.0, 0.0
-    ws = [w for w, _ in sizes]
-    return sum(ws) + GAP * (len(ws) - 1), max([h for _, h in sizes])
-
-
-def _stack(sizes: list[tuple[float, float]]) -> tuple[float, float]:
-    """``extent`` of a ``Stack`` of children of these sizes (the same sums, to the bit)."""
-    if not sizes:
-        return 0.0, 0.0
-    hs = [h for _, h in sizes]
-    return max([w for w, _ in sizes]), sum(hs) + GAP * (len(hs) - 1)
-
-
-def tree_extent(shape: str, P, D, vgrid: Grid | None, agrid: Grid | None, C,
-                split_column: tuple | None = None) -> tuple[float, float]:
-    """``extent(tree(...))`` — the same arguments, the same numbers to the bit — without building the
-    tree: a kinematics sheet's search sizes ~40 000 trees (a third of its CPU went into building and
-    walking them)."""
-    p, d = extent(P), extent(D)
-    vg = [extent(vgrid)] if vgrid is not None else []
-    ag = [extent(agrid)] if agrid is not None else []
-    if shape in ("split", "tables-accel", "accel-column"):
-        T, N = split_column
-        t, n = extent(T), extent(N)
-        if shape == "split":
-            return _stack([_row([p, d, t]), _row(vg + ag + [n])])
-        if shape == "tables-accel":
-            return _row([_stack([p, d])] + vg + [_stack([t, _row(ag + [n])])])
-        return _row([_stack([p, d])] + vg + [_stack(ag + [t, n])])
-    c = extent(C)
-    if shape == "bands":
-        return _stack([_row([p, d]), _row(vg + ag + [c])])
-    if shape == "column":
-        return _row([_stack([_row([p, d]), _row(vg + ag)]), c])
-    if shape == "accel":
-        return _stack([_row([p, d] + ag), _row(vg + [c])])
-    if shape == "stacked":
-        return _row([_stack([p, d]), _stack(vg + ag), c])
-    if shape == "stacked-bands":
-        return _row([_stack([p, d]), _stack(vg + [_row(ag + [c])])])
-    return _row([_stack([p] + vg), _stack([d] + ag + [c])])
-
-
 # (the order breaks ties of the scales: "tables-accel" before "stacked", whose acceleration plans under
 # the velocity plans leave the column's blank under its tables in one piece)
 SHAPES = ("bands", "column", "accel", "sides", "tables-accel", "stacked", "stacked-bands", "split", "accel-column")
@@ -662,7 +616,7 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
                             # the notes under the tables as wide as they are (the column's width)
                             notes_w = math.floor(half[0].w / NOTES_STEP) * NOTES_STEP
                             C, half = widen(way, notes_w)
-                        tw, th = tree_extent(shape, P, D, vg, ag, C, half)
+                        tw, th = extent(tree(shape, P, D, vg, ag, C, half))
                         if th > H + 1e-9 and tw < W - NOTES_STEP:
                             # too tall, room across: the notes wrapped wider (``widened``) — or,
                             # not ``wide``, only noted where that would make the room
@@ -673,7 +627,7 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
                             if w_ is not None and th - lowered(shape, C, half, C_, half_) <= H + 1e-9:
                                 C_, half_ = widen(way, w_)
                             if w_ is not None and th - lowered(shape, C, half, C_, half_) <= H + 1e-9:
-                                tw_, th_ = tree_extent(shape, P, D, vg, ag, C_, half_)
+                                tw_, th_ = extent(tree(shape, P, D, vg, ag, C_, half_))
                                 if not wide:
                                     if th_ <= H + 1e-9:
                                         near.append(dict(mu))
