@@ -88,8 +88,9 @@ def pytest_configure(config):
 #   awk -F'\t' '{split($1,a,"::"); s[a[1]]+=$3} END {for (k in s) print s[k], k}' FILE | sort -gr
 CPU_LOG = os.environ.get("GRAPHPLAN_TEST_CPU")
 
+import time as _time  # noqa: E402
+
 if CPU_LOG:
-    import time as _time
 
     def _cpu_logged(phase: str):
         @pytest.hookimpl(hookwrapper=True)
@@ -244,6 +245,19 @@ def example_sheet(name: str, kind: str = "kinematics", fmt: str = "A1", lang: st
 SHARED_SHEETS = "GRAPHPLAN_TEST_SHEETS"
 
 
+def _clock() -> float:
+    return _time.perf_counter()
+
+
+def _log_shared(tag: str, how: str, waited: float, cpu: float) -> None:
+    """Where ``GRAPHPLAN_TEST_CPU`` names a file, a line per shared value asked for: the tag, "built"
+    or "read", the CPU seconds of building it, the worker's pid and the seconds it waited for the other
+    worker building it — which builds a run makes, and which the workers wait on."""
+    if CPU_LOG:
+        with open(CPU_LOG, "a", encoding="utf-8") as out:
+            out.write(f"{tag}\t{how}\t{cpu:.3f}\t{os.getpid()}\t{waited:.3f}\n")
+
+
 def _shared(tag: str, build):
     """``build()``, composed once per test run and shared by its workers: the first worker to ask
     composes it (holding a lock: a worker asking meanwhile waits, as composing it itself would take
@@ -260,12 +274,18 @@ def _shared(tag: str, build):
         return build()
     stem = os.path.join(folder, hashlib.sha1(tag.encode()).hexdigest())
     with open(stem + ".lock", "w") as lock:
+        waited = _clock()
         fcntl.flock(lock, fcntl.LOCK_EX)
+        waited = _clock() - waited
         try:
             if os.path.exists(stem + ".pickle"):
                 with open(stem + ".pickle", "rb") as f:
-                    return pickle.load(f)
+                    out = pickle.load(f)
+                _log_shared(tag, "read", waited, 0.0)
+                return out
+            cpu = _time.process_time()
             out = build()
+            _log_shared(tag, "built", waited, _time.process_time() - cpu)
             try:
                 data = pickle.dumps(out, protocol=pickle.HIGHEST_PROTOCOL)
             except Exception:           # noqa: BLE001 — not picklable: each worker builds its own

@@ -270,7 +270,8 @@ GENERATED = {"crank-slider": crank_slider(0.08, 4.0, 0.2, 600.0, 60.0, 2500.0, 1
     pytest.param(EXAMPLES / "slotter.toml", "forces", "en", marks=pytest.mark.slow),
     pytest.param(EXAMPLES / "four_bar.toml", "kinematics", "en", marks=pytest.mark.slow),
     pytest.param("shaper", "dynamics", "en", marks=pytest.mark.slow),
-    pytest.param("shaper", "kinematics", "en", marks=pytest.mark.slow)], ids=str)
+    pytest.param("shaper", "kinematics", "en", marks=pytest.mark.slow)],
+    ids=lambda v: v.name if isinstance(v, Path) else str(v))     # (a path's name: ids the same in every checkout)
 def test_no_lettering_carries_raw_markup(scene, kind, lang):
     """… on the examples' sheets and on sheets of mechanisms nobody drew (tests/coursework_scenes.py)."""
     sheet = _sheets_of(GENERATED.get(scene, scene), kind, lang)

@@ -72,10 +72,17 @@ class Placer:
             self._add(_ink_points(p))
 
     def _add(self, pts, into=None) -> None:
+        # (a gear sheet's search draws ~30 trains, each Placer sampling ~10⁵ points: the loop kept tight)
         c = self.CELL
+        cells = self.cells if into is None else into
+        get, floor = cells.get, math.floor
         for x, y in pts:
-            (self.cells if into is None else into).setdefault((int(math.floor(x / c)), int(math.floor(y / c))),
-                                                              []).append((x, y))
+            key = (floor(x / c), floor(y / c))
+            got = get(key)
+            if got is None:
+                cells[key] = [(x, y)]
+            else:
+                got.append((x, y))
 
     def free(self, box, cells=None) -> bool:
         x0, y0, x1, y1 = box
@@ -156,9 +163,10 @@ class Placer:
 
     def _add_box(self, box) -> None:
         x0, y0, x1, y1 = box
-        pts = [(float(x), y) for x in np.arange(x0, x1 + 0.4, 0.4) for y in (y0, y1)] + \
-              [(x, float(y)) for y in np.arange(y0, y1 + 0.4, 0.4) for x in (x0, x1)] + \
-              [(float(x), float(y)) for x in np.arange(x0, x1 + 0.4, 0.8) for y in np.arange(y0, y1 + 0.4, 0.8)]
+        xs, ys = np.arange(x0, x1 + 0.4, 0.8).tolist(), np.arange(y0, y1 + 0.4, 0.8).tolist()
+        pts = [(x, y) for x in np.arange(x0, x1 + 0.4, 0.4).tolist() for y in (y0, y1)] + \
+              [(x, y) for y in np.arange(y0, y1 + 0.4, 0.4).tolist() for x in (x0, x1)] + \
+              [(x, y) for x in xs for y in ys]
         self._add(pts)
         self._add(pts, self.letters)
 
@@ -196,8 +204,8 @@ def _ink_points(p) -> list[tuple[float, float]]:
         return [(x, y), (x + 0.6, y), (x - 0.6, y), (x, y + 0.6), (x, y - 0.6)]
     if p.kind == "text":
         x0, y0, x1, y1 = p.bounds()
-        return [(x, y) for x in np.arange(x0, x1 + step, step) for y in (y0, y1)] + \
-               [(x, y) for y in np.arange(y0, y1 + step, step) for x in (x0, x1)]
+        return [(x, y) for x in np.arange(x0, x1 + step, step).tolist() for y in (y0, y1)] + \
+               [(x, y) for y in np.arange(y0, y1 + step, step).tolist() for x in (x0, x1)]
     return [tuple(q) for q in p.points]
 
 
