@@ -254,10 +254,11 @@ def test_the_achieved_delta_is_written_as_given(sheets, key, given):
 
 @pytest.mark.parametrize("key", [("sixbar", "uk"), ("sixbar", "en")])
 def test_omega_m_squared_delta_is_typeset(sheets, key):
-    """ω with m below and 2 above, then ·δ on the line — in the flywheel's formula and in tg ψ."""
+    """ω with m below and 2 above, then ·δ on the line — in the flywheel's formula and in tg ψ (English: tan ψ,
+    review 58 #7: English texts write tan)."""
     found = 0
     for text in lettering(sheets[key]):
-        if not (text.startswith("J = ") or text.startswith("tg ψ")):
+        if not (text.startswith("J = ") or text.startswith(("tg ψ", "tan ψ"))):
             continue
         r = runs(text)
         for k, run in enumerate(r[:-2]):
@@ -486,3 +487,12 @@ def test_the_flywheels_arithmetic_gives_table_2s_values_from_its_printed_numbers
     table = {r[0]: r[1] for r in rows(sheet, "flywheel table") if len(r) == 3}
     assert next(v for k, v in table.items() if k.startswith("графічно")) == graphical
     assert next(v for k, v in table.items() if k.startswith("наближено: (")) == value
+
+
+def test_the_english_sheet_writes_tan_and_the_ukrainian_tg(sheets):
+    """Review 58 #7: the tangents' slope in the notes is «tg ψ» on the Ukrainian sheet (ДСТУ) and «tan ψ»
+    on the English one, as English texts write it."""
+    en = [t for t in lettering(sheets[("sixbar", "en")]) if "ψ = μ" in t]
+    uk = [t for t in lettering(sheets[("sixbar", "uk")]) if "ψ = μ" in t]
+    assert en and all(t.startswith("tan ψ") for t in en), en
+    assert uk and all(t.startswith("tg ψ") for t in uk), uk

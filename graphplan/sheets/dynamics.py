@@ -264,7 +264,7 @@ def notes(f: Flywheel, doc: dict, lang: str, short: Shortfall | None = None, mot
              f"{'A_с' if uk else 'A_c'} = {sig(doc['work_resistance'], lang)} {J}, "     # four figures, the terminal's
              f"{'M^*_д = A_с/2π' if uk else 'M^*_d = A_c/2π'} = {sig(doc['moment_driving'], lang)} {Nm}; "
              f"{'графічно' if uk else 'graphical'} {num(f.driving, lang)} {Nm}",
-             f"tg ψ = μ_I·ω_{{m}}^{{2}}(1 ± δ)/(2μ_T): ψ_{{max}} = {fixed(fw['psi_max_deg'], lang, PSI_DECIMALS)}°, "
+             f"{'tg' if uk else 'tan'} ψ = μ_I·ω_{{m}}^{{2}}(1 ± δ)/(2μ_T): ψ_{{max}} = {fixed(fw['psi_max_deg'], lang, PSI_DECIMALS)}°, "
              f"ψ_{{min}} = {fixed(fw['psi_min_deg'], lang, PSI_DECIMALS)}°",
              wittenbauer_note(f, lang, flywheel_decimals(doc)),
              *[line for line in (reducer_note(f, lang), tangents_note(f, lang)) if line],
