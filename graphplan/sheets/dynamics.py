@@ -941,6 +941,24 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
             lo = k + 1
     L, size = found if found is not None else sizes[-1]
 
+    def least_holds(leaves, tables, notes_, least: Leaf) -> bool:
+        """Some composition ``held`` tries fits the field with the band at its least box (``band_least``):
+        arithmetic alone — a drawn band is never smaller, and the compositions' extents grow with their
+        leaves, so where this fails no band drawn at that φ axis would be held (the tests left out
+        here, the notes' and ω(φ)'s nooks, only take compositions away)."""
+        trial = {**leaves, "band": least}
+        for in_nook in (True, False):
+            for shape in SHAPES:
+                if in_nook and shape in NOOKED:
+                    continue
+                for parts in (1, 2, 3):
+                    C = _column(f, tables, parts, None if in_nook or shape == "nook"
+                                else lambda w: notes_height(notes_, w), shape)[0]
+                    tw, th = extent(_tree(shape, trial, C, foot))
+                    if tw <= W + 1e-9 and th <= H + 1e-9:
+                        return True
+        return False
+
     def held(L: float, size: float, quick: bool = scales_only):
         """The band at its longest φ axis some composition holds at (L, size) (the notes in the band's
         nook where they fit it), or None; ``quick``: (L, size) where it holds at its shortest."""
@@ -966,6 +984,8 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
                 least = band_least(built(L, size), length)      # no composition holds a band wider or
                 if least[0] > W + 1e-9 or least[1] > H + 1e-9:   # taller than the field: not drawn
                     continue
+                if not least_holds(leaves, tables, notes_, Leaf("band", *least)):   # nor where no composition
+                    continue                     # holds even its least box (stop 58: LINK57 drew 152 bands)
                 leaves["band"], nooks = band_and_nooks(L, size, length)
                 # the notes in the band's nook where they fit it (the column then holds the tables alone)
                 for in_nook in (True, False):
