@@ -41,6 +41,7 @@ STEP_DEG = 0.25        # the cycle's table: at most this far between exact sampl
 STIFF = 30.0           # relaxation per radian a/(I*·ω) beyond which the motor ODE is integrated as stiff
 RTOL = 1e-11           # solve_ivp's tolerances
 PERIODIC = 1e-11       # the shooting's tolerance on ω(2π) − ω(0), relative
+SETTLED = 1e-9         # Newton's shooting has settled once a step moves ω(0) no more than this, relative
 FINE = 7200            # samples per turn for ω_max, ω_min (refined by a parabola)
 DELTA_RANGE = (0.0, 0.5)
 
@@ -472,7 +473,11 @@ def _stiff(c: Cycle, dr: Drive, const: float) -> bool:
 def _periodic_start(c: Cycle, dr: Drive, const: float, guess: float | None) -> float | None:
     """ω(0) of the motor's periodic steady state by Newton's method on T(2π) − T(0) = 0, the
     derivative ∂T(2π)/∂T(0) integrated alongside (dS/dφ = a·S/(I*·ω), M*_d = a·ω + b): a few
-    integrations. None when it does not settle (then the bracketing search decides)."""
+    integrations. None when it does not settle (then the bracketing search decides). It has settled
+    once a step moves ω(0) by no more than SETTLED of it: Newton's next error is about the square of
+    that step, below the integration's own noise (rtol 1e-11: the steps then jitter by 1e-11…4e-11 of
+    ω). The stop at 1e-12 waited for a lucky jitter — LINK57's flywheel search fell back to the
+    bracketing (~20 integrations instead of 2–3) in 12 of its 16 steady states (stop 58)."""
     a = dr.ratio * dr.efficiency * dr.motor.line[0] * dr.ratio        # dM*_d/dω on the crank
     i0 = c.inertia(0.0) + const
 
@@ -495,7 +500,7 @@ def _periodic_start(c: Cycle, dr: Drive, const: float, guess: float | None) -> f
         if t_new <= 0:
             return None
         w_new = math.sqrt(2 * t_new / i0)
-        if abs(w_new - w0) <= PERIODIC * 0.1 * w0:
+        if abs(w_new - w0) <= SETTLED * w0:
             return w_new
         w0 = w_new
     return None
@@ -542,15 +547,23 @@ def flywheel_motor(c: Cycle, dr: Drive, delta: float, guess: float) -> float:
     own slope and the rotor already keep δ below the request. Brent's method on the simulated δ(J),
     which falls as J grows, in a bracket found by steps out from the classical flywheel (each
     steady state started from the last one's ω(0))."""
+    return _flywheel_motor(c, dr, delta, guess)[0]
+
+
+def _flywheel_motor(c: Cycle, dr: Drive, delta: float, guess: float) -> tuple[float, dict[float, Motion]]:
+    """``flywheel_motor`` and the steady states it simulated, by J (each J once: the bracket's
+    ends were simulated again by brentq before, stop 58)."""
     from scipy.optimize import brentq
     last: dict[str, float | None] = {"w0": None}
+    seen: dict[float, Motion] = {}
 
     def f(j: float) -> float:
-        m = motor_motion(c, dr, j, last["w0"])
-        last["w0"] = float(m.omega[0])
-        return m.delta - delta
+        if j not in seen:
+            seen[j] = motor_motion(c, dr, j, last["w0"])
+            last["w0"] = float(seen[j].omega[0])
+        return seen[j].delta - delta
     if f(0.0) <= 0:
-        return 0.0
+        return 0.0, seen
     g = max(guess, 1e-6)
     fg = f(g)
     step = 0.05 * g
@@ -564,7 +577,10 @@ def flywheel_motor(c: Cycle, dr: Drive, delta: float, guess: float) -> float:
         while a > 0 and f(a) < 0:
             b, step = a, step * 2.0
             a = max(a - step, 0.0)
-    return brentq(f, a, b, xtol=1e-10 * g, rtol=1e-12, maxiter=200)
+    # to 1e-8 of the guess: δ(J) is simulated to ~1e-10 (ω's extremes off 7200 samples), so J to ~3e-9
+    # of itself at best — the search's last steps to 1e-10 wandered in that noise (LINK57: 6 of its 16
+    # steady states, stop 58); the sheets print J to 4 digits
+    return brentq(f, a, b, xtol=1e-8 * g, rtol=1e-12, maxiter=200), seen
 
 
 def carries(dr: Drive, m: Motion) -> None:
@@ -627,8 +643,10 @@ def analyse(st: Study, delta: float | None = None) -> Dynamics:
     total = flywheel_classical(c, delta, wm)
     # the steady state with the exact flywheel: I_fl = 0 where rotor and reducer already exceed J
     motion = classical(c, max(total, dr.rotor_reduced + dr.reducer_reduced), wm)
-    fm = flywheel_motor(c, dr, delta, max(total - dr.rotor_reduced - dr.reducer_reduced, 0.0))
-    mm = motor_motion(c, dr, fm)
+    fm, seen = _flywheel_motor(c, dr, delta, max(total - dr.rotor_reduced - dr.reducer_reduced, 0.0))
+    # the steady state at the root: the search's own where it simulated the root, else from its ω(0) nearest
+    near = min(seen, key=lambda j: abs(j - fm)) if seen else None
+    mm = seen[fm] if fm in seen else motor_motion(c, dr, fm, float(seen[near].omega[0]) if near is not None else None)
     carries(dr, mm)
     warnings = list(dr.warnings) + notes
     const = dr.rotor_reduced + dr.reducer_reduced

@@ -111,6 +111,19 @@ WORDS = {
 ROW = 6.0     # mm: a row of the tables
 
 
+def note_under(rec: Record, span: tuple[float, float], top: float, text: str, step: str) -> int:
+    """``text`` under a table ``rec`` whose body spans ``span`` = (x0, x1) (its bounds before any
+    note: a note never widens the next one), wrapped to that width less the indent, its first line
+    from ``top`` (mm, the baseline) at x0, the lines it wraps to indented 4 mm (the tables' notes: the
+    chords, the approximate arithmetic, the marks' legend, the design answer, the rotor's estimate);
+    the count of lines written."""
+    x0, x1 = span
+    parts = wrap_markup(text, x1 - x0 - 4.0, 2.5)
+    for k, part in enumerate(parts):
+        rec.label((x0 + (4.0 if k else 0.0), top - k * line_pitch(2.5)), part, size=2.5, layer="tables", step=step)
+    return len(parts)
+
+
 def positions_table(doc: dict, lang: str, extra: list[str] | tuple[str, ...] = ()) -> Record:
     """I*_m, dI*_m/dφ, M*_c, M*_d, A_c and ΔT (graphical and exact) per position; φ is the crank's
     turn from position 0 (the diagrams' abscissa), so dI*_m/dφ follows the printed φ whatever the
@@ -133,11 +146,7 @@ def positions_table(doc: dict, lang: str, extra: list[str] | tuple[str, ...] = (
     x0, y0, x1, _ = rec.bounds()            # under the table: the chords' heights and what δ is of
     top = y0 - 4.2
     for line, step in ((chords_note(doc, lang), "chord heights"), *((t, "added points") for t in extra)):
-        parts = wrap_markup(line, x1 - x0 - 4.0, 2.5)
-        for k, part in enumerate(parts):
-            rec.label((x0 + (4.0 if k else 0.0), top - k * line_pitch(2.5)), part, size=2.5, layer="tables",
-                      step=step)
-        top -= len(parts) * line_pitch(2.5)
+        top -= note_under(rec, (x0, x1), top, line, step) * line_pitch(2.5)
     return rec
 
 
@@ -170,22 +179,13 @@ def flywheel_table(doc: dict, lang: str, why: list[str] | tuple[str, ...] = ()) 
     rec = table(rows, [78.0, 24.0, 18.0], row_h=6.0, size=2.5, title=w["flywheel"])
     # under the table, the approximate row's arithmetic: its printed numbers give its printed value
     x0, y0, x1, _ = rec.bounds()
-    parts = wrap_markup(approximate_note(doc, lang), x1 - x0 - 4.0, 2.5)
-    for k, part in enumerate(parts):
-        rec.label((x0 + (4.0 if k else 0.0), y0 - 4.2 - k * line_pitch(2.5)), part, size=2.5, layer="tables",
-                  step="approximate arithmetic")
-    top = y0 - 4.2 - (len(parts) + 0.3) * line_pitch(2.5)
+    n = note_under(rec, (x0, x1), y0 - 4.2, approximate_note(doc, lang), "approximate arithmetic")
+    top = y0 - 4.2 - (n + 0.3) * line_pitch(2.5)
     for line in why:                        # the marks' legend, each line indented where it wraps
-        lines = wrap_markup(line, x1 - x0 - 4.0, 2.5)
-        for k, part in enumerate(lines):
-            rec.label((x0 + (4.0 if k else 0.0), top - k * line_pitch(2.5)), part, size=2.5, layer="tables",
-                      step="marks legend")
-        top -= (len(lines) + 0.3) * line_pitch(2.5)
+        top -= (note_under(rec, (x0, x1), top, line, "marks legend") + 0.3) * line_pitch(2.5)
     said = design_note(doc, lang)           # which of the two answers the design fits (review 11)
     if said:
-        for k, part in enumerate(wrap_markup(said, x1 - x0 - 4.0, 2.5)):
-            rec.label((x0 + (4.0 if k else 0.0), top - k * line_pitch(2.5)), part, size=2.5, layer="tables",
-                      step="design answer")
+        note_under(rec, (x0, x1), top, said, "design answer")
     return rec
 
 
@@ -224,9 +224,7 @@ def motor_table(doc: dict, lang: str) -> Record:
     said = rotor_estimate_note(doc, lang)
     if said:
         x0, y0, x1, _ = rec.bounds()
-        for k, part in enumerate(wrap_markup(said, x1 - x0 - 4.0, 2.5)):
-            rec.label((x0 + (4.0 if k else 0.0), y0 - 4.2 - k * line_pitch(2.5)), part, size=2.5, layer="tables",
-                      step="rotor estimated")
+        note_under(rec, (x0, x1), y0 - 4.2, said, "rotor estimated")
     return rec
 
 
@@ -943,6 +941,24 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
             lo = k + 1
     L, size = found if found is not None else sizes[-1]
 
+    def least_holds(leaves, tables, notes_, least: Leaf) -> bool:
+        """Some composition ``held`` tries fits the field with the band at its least box (``band_least``):
+        arithmetic alone — a drawn band is never smaller, and the compositions' extents grow with their
+        leaves, so where this fails no band drawn at that φ axis would be held (the tests left out
+        here, the notes' and ω(φ)'s nooks, only take compositions away)."""
+        trial = {**leaves, "band": least}
+        for in_nook in (True, False):
+            for shape in SHAPES:
+                if in_nook and shape in NOOKED:
+                    continue
+                for parts in (1, 2, 3):
+                    C = _column(f, tables, parts, None if in_nook or shape == "nook"
+                                else lambda w: notes_height(notes_, w), shape)[0]
+                    tw, th = extent(_tree(shape, trial, C, foot))
+                    if tw <= W + 1e-9 and th <= H + 1e-9:
+                        return True
+        return False
+
     def held(L: float, size: float, quick: bool = scales_only):
         """The band at its longest φ axis some composition holds at (L, size) (the notes in the band's
         nook where they fit it), or None; ``quick``: (L, size) where it holds at its shortest."""
@@ -968,6 +984,8 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
                 least = band_least(built(L, size), length)      # no composition holds a band wider or
                 if least[0] > W + 1e-9 or least[1] > H + 1e-9:   # taller than the field: not drawn
                     continue
+                if not least_holds(leaves, tables, notes_, Leaf("band", *least)):   # nor where no composition
+                    continue                     # holds even its least box (stop 58: LINK57 drew 152 bands)
                 leaves["band"], nooks = band_and_nooks(L, size, length)
                 # the notes in the band's nook where they fit it (the column then holds the tables alone)
                 for in_nook in (True, False):
