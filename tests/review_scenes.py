@@ -7838,3 +7838,91 @@ planets = 3
 module = 0.004
 rpm = 1500
 '''
+
+
+# kin58b: the blind review 58's coulisse six-bar (review58-scratch/a_coulisse.toml): crank-rocker O1A-AB-O2B whose
+# rocker's extension C carries a block in the slot of the slotted lever O3E (its ψ_max arc passes O2's support)
+KIN58B_COULISSE = '''# review58 (a): a six-bar of a swinging feeder: the crank-rocker four-bar O1A-AB-O2B (crank CLOCKWISE) whose rocker's
+# extension carries at C a sliding block 4 in the slot of a second rocker (slotted lever) O3E:
+# I(0-1) -> II(2-3) ВВВ -> II(4-5) ВПВ (RPR, coulisse); a 60 N·m resistance moment on the slotted lever over its
+# working (slow) swing, masses by length, the block 2 kg, and [dynamics].
+title = "Шестиланковий механізм живильника з кулісою"
+title_en = "Six-bar feeder drive with a slotted lever"
+designation = "ТММ.КП.58.100"
+
+[sheet]
+student = "Рецензент Р. Р."
+teacher = "Викладач В. В."
+group = "МБ-58"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.32, 0.0]
+O3 = [0.10, 0.50]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.08
+rpm = 90
+direction = "cw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.30
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.22
+shape = { C = [0.34, 0.0] }
+points = { S3 = 0.5 }
+
+[[link]]
+name = "4"
+number = 4
+joints = ["C"]
+slides_on = "O3E"
+mass = 2
+inertia = 0.001
+
+[[link]]
+name = "O3E"
+number = 5
+joints = ["O3"]
+length = 0.50
+points = { E = 1.0, S5 = 0.5 }
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "working"
+output = "O3E"
+accel = [2, 7]
+force_phi_deg = 75
+
+[loads]
+g = 9.81
+mass_per_length = 20
+inertia_factor = 0.1
+
+[[moment]]
+link = "O3E"
+magnitude = 60
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+efficiency = 0.9
+synchronous_rpm = 1000
+'''
