@@ -62,12 +62,12 @@ def test_the_review_coulisses_swing_is_lettered_clear_of_the_other_rockers_pivot
     the four-bar's rocker; «ψ_max = 57,75°» is lettered by its own arc, its text at least SWING_CLEAR
     from O2 (it stood 9 mm from O2, beside its support), within a few mm of its own arc."""
     from conftest import scene_study
-    from review_scenes import KIN58B_COULISSE
+    from review_scenes import COULISSE_REVIEW58
     from graphplan.drawing.plans import position_record, swing
     from graphplan.graphic.plans import build_plans, where
     from graphplan.graphic.record import text_width
     from graphplan.model.mechanism import FRAME
-    st = scene_study(KIN58B_COULISSE)
+    st = scene_study(COULISSE_REVIEW58)
     plans = build_plans(st)
     psi = swing(plans)
     lay = plans.positions[0].layout
