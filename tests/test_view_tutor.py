@@ -317,6 +317,10 @@ def walk_the_lessons(d, scene: Path, tmp: Path) -> int:
     walked = d.execute_script(TUTOR_WALK)   # (selenium's default) at a load average of 33 on two cores, stop 58
     assert len(walked) == len(data["records"])
     st = study(load(scene))
+    widest = {}         # each kind's largest plan across (mm, with its pole), from the drawn points
+    for rec in data["records"]:
+        xs, ys = [0.0] + [p[1] for p in rec["points"]], [0.0] + [p[2] for p in rec["points"]]
+        widest[rec["kind"]] = max(widest.get(rec["kind"], 0.0), max(xs) - min(xs), max(ys) - min(ys))
     for rec, steps in zip(data["records"], walked):
         pos = next(p for p in planned["positions"] if p["index"] == rec["index"]) if rec["index"] is not None else None
         plan_json = pos[rec["kind"]] if pos else None
@@ -338,10 +342,13 @@ def walk_the_lessons(d, scene: Path, tmp: Path) -> int:
             rounds = sorted(m * 10.0 ** j for j in (k, k + 1) for m in (1, 1.5, 2, 2.5, 4, 5, 7.5))
             assert next(m for m in rounds if m >= raw * (1 - 1e-12)) == pytest.approx(scale["mu"], rel=1e-12)
             assert "GOST 2.302" in zero["caption"]
-        else:       # the sheet chose p_v a ≥ 40 mm (docs/scenes.md) and μ = v_A/p_v a, 3 figures down
-            raw = exact / scale["trial"]
-            k = math.floor(math.log10(raw)) - 2
-            assert scale["trial"] >= 40 and scale["mu"] == pytest.approx(math.floor(raw / 10 ** k) * 10 ** k)
+        else:       # the sheet chose p_v a ≥ 40 mm (docs/scenes.md) and μ = v_A/p_v a, 3 figures down — or,
+            raw = exact / scale["trial"]     # the plans reading by their size (a plan ≥ 100 mm across), a
+            k = math.floor(math.log10(raw)) - 2     # shorter multiple of 5 mm the sheet's room held, said so
+            assert scale["mu"] == pytest.approx(math.floor(raw / 10 ** k) * 10 ** k)
+            if scale["trial"] < 40:
+                assert scale["trial"] % 5 == 0 and "shorter than 40 mm: the plan reads by its size" in zero["caption"]
+                assert widest[rec["kind"]] >= 100 - 1e-6, (scene.stem, rec["kind"], widest)
         assert scale["drawn"] == pytest.approx(exact / scale["mu"], abs=1e-6)
         shown = zero["caption"].replace("−", "-")
         assert f"μ{mu_name[-1]} = {scale['mu']:g} " in shown and f"= {scale['drawn']:.1f} mm" in shown, shown

@@ -8,7 +8,7 @@ import math
 from dataclasses import dataclass
 
 from graphplan.util.markup import escape, indexed
-from graphplan.graphic.record import Record, arc_head
+from graphplan.graphic.record import Record, arc_head, text_width
 from graphplan.drawing.labels import LabelRequest, place_first, place_labels, place_owned
 from graphplan.model.linkshape import (BUSH_GAP_MM, BUSH_HALF_MM, extra_points, outline_names, rod_crossing,
                                         rod_from_slot, rod_stubs, slot_line, slot_outline, yoke_body, yoke_guide, yoke_shape)
@@ -857,8 +857,32 @@ def swing_dimension(rec: Record, plans: Plans, lang: str = "uk") -> list[LabelRe
     for end, sense in ((a1, -1), (a2, 1)):          # the arrows at both ends, pointing outward along the arc
         tail, tip = arc_head(P, R, end, sense)
         rec.vector(tail, tip, role="construction", layer="construction", step=step)
-    mid = P + R * cmath.exp(1j * math.radians(0.5 * (a1 + a2)))
-    return [LabelRequest(mid, f"ψ_max = {fixed(psi, lang, 2)}°", toward=mid - P, size=3.5, step=step)]
+    others = [where(sc, ends[0], FRAME, j) for j in st.mech.frame if j != pivot]
+    text = f"ψ_max = {fixed(psi, lang, 2)}°"
+    # the lettering may stand its whole width either way of its anchor: clear by that and SWING_CLEAR
+    t = swing_label_at(P, R, a1, a2, others, text_width(text, 3.5) + SWING_CLEAR)
+    mid = P + R * cmath.exp(1j * math.radians(a1 + t * (a2 - a1)))
+    return [LabelRequest(mid, text, toward=mid - P, size=3.5, step=step)]
+
+
+SWING_CLEAR = 10.0   # mm: the swing's lettering (its anchor: this and the text's width) this far from any other pivot
+SWING_TRIES = (0.5, 0.4, 0.6, 0.3, 0.7, 0.2, 0.8)    # where along the arc (a share of its sweep), the middle first
+
+
+def swing_label_at(P: complex, R: float, a1: float, a2: float, others: list[complex],
+                   clear: float = SWING_CLEAR) -> float:
+    """Where along the swing's dimension arc (about ``P``, radius ``R`` mm, from ``a1`` to ``a2``
+    degrees) its ψ_max is lettered, as a share of the sweep: the middle, unless another fixed pivot
+    (``others``: the frame's other points, a support drawn at each) stands within ``clear`` mm of it
+    (the sheet passes the lettering's width and ``SWING_CLEAR``) — there a teacher reads the angle
+    as that pivot's rocker's (review 58: the slotted lever's ψ_max = 57,75° beside O2, the other
+    rocker's pivot) — then the nearest share to the middle that clears them all, else the one
+    farthest from them."""
+    def clearance(t: float) -> float:
+        at = P + R * cmath.exp(1j * math.radians(a1 + t * (a2 - a1)))
+        return min((abs(at - o) for o in others), default=math.inf)
+    good = next((t for t in SWING_TRIES if clearance(t) >= clear), None)
+    return good if good is not None else max(SWING_TRIES, key=clearance)
 
 
 _MM = {"uk": "мм", "en": "mm"}     # a scheme's dimension with its unit (review 56 #6: "H = 42,2" read bare)

@@ -119,6 +119,16 @@ SAY: dict[str, tuple[str, str]] = {
                      "(not shorter than {least} mm, for the plan to read) for {sym}_{pin} = {value} {unit} ⇒ μ_{s} = "
                      "{sym}_{pin}/{seg} = {value}/{trial} = {raw} {munit}; write it to three significant figures, "
                      "rounded down: μ_{s} = {mu} {munit}; then {seg} = {sym}_{pin}/μ_{s} = {drawn} mm"),
+    "scale chosen size": ("Крок 0: полюс і масштаб. Полюс {pole} ставимо в будь-якому місці аркуша. Беремо {seg} = {trial} мм "
+                          "(коротше {least} мм: план читається за розміром — найбільший план не менше {across} мм "
+                          "завширшки — і довшого місце аркуша не вміщує) для {sym}_{pin} = {value} {unit} ⇒ μ_{s} = "
+                          "{sym}_{pin}/{seg} = {value}/{trial} = {raw} {munit}; записуємо три значущі цифри, заокругливши "
+                          "вниз: μ_{s} = {mu} {munit}; тоді {seg} = {sym}_{pin}/μ_{s} = {drawn} мм",
+                          "Step 0: the pole and the scale. Put the pole {pole} anywhere on the sheet. Take {seg} = {trial} mm "
+                          "(shorter than {least} mm: the plan reads by its size — the largest plan at least {across} mm "
+                          "across — and the sheet's room holds no longer) for {sym}_{pin} = {value} {unit} ⇒ μ_{s} = "
+                          "{sym}_{pin}/{seg} = {value}/{trial} = {raw} {munit}; write it to three significant figures, "
+                          "rounded down: μ_{s} = {mu} {munit}; then {seg} = {sym}_{pin}/μ_{s} = {drawn} mm"),
     "scale rounded": ("Крок 0: полюс і масштаб. Полюс {pole} ставимо в будь-якому місці аркуша. Беремо {seg} = {trial} мм "
                       "(не коротше {least} мм, щоб план читався) для {sym}_{pin} = {value} {unit} ⇒ μ_{s} = "
                       "{sym}_{pin}/{seg} = {value}/{trial} = {raw} {munit}; записуємо дві значущі цифри: "
@@ -354,6 +364,7 @@ class Replay:
         import math
 
         from graphplan.graphic.scales import LEGIBLE_MM, at_least, on_round, on_series
+        from graphplan.sheets.kinlayout import PLAN_MM
         n, plan, cr = self.n, self.plan, self.n.mech.crank
         e = plan.entries.get(cr.pin)
         if e is None or not float(e.analytic) > 0:
@@ -373,7 +384,12 @@ class Replay:
         munit = "(m/s)/mm" if plan.kind == "velocity" else "(m/s²)/mm"
         why = say("why sheet", f=sheet) if sheet else say("why own")
         a = sub(cr.pin)
-        self.add([], say("scale rounded" if rounded else "scale chosen" if chosen else "scale gost" if gost else "scale", least=both(lambda lang: num(LEGIBLE_MM, lang)), pole=n.pole, seg=seg(n.pole, a), trial=both(lambda lang: fixed(trial, lang, 0 if trial == int(trial) else 1)),
+        # a length chosen under LEGIBLE_MM: the sheet's room grew a plan that reads by its size
+        # (sheets.kinlayout.into_room, readable: docs/scenes.md's "the plans read by their size")
+        short = chosen and not rounded and trial < LEGIBLE_MM - 1e-9
+        key = "scale rounded" if rounded else "scale chosen size" if short else "scale chosen" if chosen else \
+            "scale gost" if gost else "scale"
+        self.add([], say(key, least=both(lambda lang: num(LEGIBLE_MM, lang)), across=both(lambda lang: num(PLAN_MM, lang)), pole=n.pole, seg=seg(n.pole, a), trial=both(lambda lang: fixed(trial, lang, 0 if trial == int(trial) else 1)),
                          sym=n.sym, pin=cr.pin, value=both(lambda lang: num(value, lang)),
                          unit=both(lambda lang: unit(n.unit, lang)), s=s_,
                          raw=both(lambda lang: num(raw, lang)), munit=both(lambda lang: unit(munit, lang)), why=why,
