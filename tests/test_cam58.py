@@ -14,9 +14,10 @@ import numpy as np
 import pytest
 
 from camfixtures import cam_fixture
-from review_scenes import CAM58
+from review_scenes import CAM58, OWN_CAM58
 
 cam58 = cam_fixture("cam58", CAM58, 10)
+own58 = cam_fixture("own58", OWN_CAM58, 8)
 
 A, L, R = 0.11, 0.09, 0.01                  # a, l, r (m)
 PSI = math.radians(25.0)
@@ -268,3 +269,75 @@ def test_stop_57s_a1_sheets_lose_their_top_left_strip(name):
     room = (dia.box[2], got["profile"].box[0])
     assert (ph[0] - room[0]) == pytest.approx(room[1] - ph[2], abs=8.0)   # the GAPs either side within 8 mm
     assert not boxes_apart(page)
+
+
+# -- cam58's own look: OWN_CAM58, a rocking roller follower, the cam CLOCKWISE, parabolic rise, LINEAR return ------
+
+def test_own58_clockwise_rocking_cam_by_brute_force(own58):
+    """OWN_CAM58 (ψ_max = 20°, l = 100 mm, a = 120 mm; a parabolic rise of 120°, a far dwell of 40°, a linear
+    return of 100°; [ϑ] 40°/45°; the cam clockwise, σ = −1) by the brute force above with the clockwise
+    relative velocity C′ + iC: R0 min to 0.01 mm (the counter-clockwise sense would give another, 37.86 mm:
+    the sense enters), each phase's largest ϑ at R0 = 37 mm and its turn (the return's at its start, one-sided
+    after the jump of dψ/dφ), the two corners at the return's ends (convex at 160°, concave at 260°) and the
+    shocks: rigid there, soft at the parabolic rise's start, middle and end."""
+    cam, sol, g, doc = own58
+    a, l, psi_max = 0.12, 0.10, math.radians(20.0)
+    phi = np.linspace(0.0, 360.0, 36001)
+
+    def psi_of(p):
+        p = np.asarray(p, float)
+        out = np.zeros_like(p)
+        m = p <= 120.0
+        u = p[m] / 120.0
+        out[m] = psi_max * np.where(u <= 0.5, 2 * u * u, 1 - 2 * (1 - u) ** 2)
+        out[(p > 120.0) & (p <= 160.0)] = psi_max
+        m = (p > 160.0) & (p <= 260.0)
+        out[m] = psi_max * (1 - (p[m] - 160.0) / 100.0)
+        return out
+    psi = psi_of(phi)
+    dpsi = (psi_of(phi + 1e-4) - psi_of(phi - 1e-4)) / math.radians(2e-4)
+    rise, ret = phi <= 120.0, (phi > 160.0 + 1e-3) & (phi < 260.0 - 1e-3)
+
+    def theta(R0, sigma):
+        psi0 = math.acos((a * a + l * l - R0 * R0) / (2 * a * l))
+        turn = np.exp(1j * (math.pi - psi0 - psi))
+        C, dC = a + l * turn, -1j * l * turn
+        t = dC * dpsi - 1j * sigma * C
+        return np.degrees(np.arcsin((np.conj(t) * dC / l).real / np.abs(t)))
+
+    def r0_min(sigma):
+        def worst(R):
+            th = theta(R, sigma)
+            return max(np.max(np.abs(th[rise])) / 40.0, np.max(np.abs(th[ret])) / 45.0)
+        scan = np.arange(0.0205, 0.09, 0.0005)
+        ok = np.array([worst(r) <= 1.0 for r in scan])
+        i = int(np.argmax(ok))
+        assert i > 0 and ok[i:].all()
+        lo, hi = scan[i - 1], scan[i]
+        for _ in range(30):
+            mid = (lo + hi) / 2
+            lo, hi = (lo, mid) if worst(mid) <= 1.0 else (mid, hi)
+        return hi
+    assert doc["sense"] == "cw"
+    assert doc["base_radius_min_m"] == pytest.approx(r0_min(-1), abs=1e-5)
+    assert abs(doc["base_radius_min_m"] - r0_min(+1)) > 1e-3
+    th = theta(0.037, -1)
+    for name, m in (("rise", rise), ("return", ret)):
+        k = int(np.argmax(np.abs(th[m])))
+        assert doc["pressure_angle_extreme_deg"][name] == pytest.approx(th[m][k], abs=0.05)
+        assert doc["pressure_angle_extreme_phi_deg"][name] == pytest.approx(phi[m][k], abs=0.2)
+    # the corners: the centre profile P = C·e^{iφ} (σ = −1) turns there by the angle between its tangents just
+    # before and just after; convex where that turn has the sense the whole profile winds in
+    psi0 = math.acos((a * a + l * l - 0.037 ** 2) / (2 * a * l))
+    P = (a + l * np.exp(1j * (math.pi - psi0 - psi))) * np.exp(1j * np.radians(phi))
+    winding = np.sign(np.sum((np.conj(P) * np.roll(P, -1)).imag))
+    want = []
+    for at in (160.0, 260.0):
+        j = int(round(at * 100))
+        before, after = P[j] - P[j - 5], P[j + 5] - P[j]
+        want.append((at, bool(np.sign((np.conj(before) * after).imag) == winding)))
+    corners = [(c["phi_deg"], c["convex"]) for c in doc["profile_corners"]]
+    assert corners == [(pytest.approx(w[0]), w[1]) for w in want]
+    assert [w[1] for w in want] == [True, False]
+    shocks = {(round(x["phi_deg"], 6), x["kind"]) for x in doc["shocks"]}
+    assert shocks == {(160.0, "rigid"), (260.0, "rigid"), (0.0, "soft"), (60.0, "soft"), (120.0, "soft")}
