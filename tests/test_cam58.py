@@ -212,7 +212,7 @@ def test_the_diagrams_stand_at_their_columns_left_and_the_room_under_the_phase_d
     pb = placed.bounds()
     assert pb[0] == pytest.approx(box[0]) and pb[3] == pytest.approx(box[3])
     room = sc.hole(dia, box)
-    left = Record_of(placed, rec.parts)
+    left = _bounds_of(placed, rec.parts)
     assert room[0] == pytest.approx(left[2] + 2 * GAP) and room[2] == box[2]
     notes = (room[0], room[1], room[2], room[1] + 50.0)                # a leaf in the room (the notes)
     parts = {p.name: p for p in sc.apart("diagrams", placed, box, [(dia, box), (Leaf("notes", 1.0, 1.0), notes)],
@@ -228,7 +228,7 @@ def test_the_diagrams_stand_at_their_columns_left_and_the_room_under_the_phase_d
         rec.flush = True
 
 
-def Record_of(rec, n):
+def _bounds_of(rec, n):
     """The bounds of a record's first ``n`` items (the s, ds/dφ, d²s/dφ² diagrams of beside's record)."""
     from graphplan.graphic.record import Record
     return Record(rec.title, rec.items[:n], {}).bounds()
