@@ -8013,3 +8013,31 @@ delta = 0.05
 efficiency = 0.85
 synchronous_rpm = 1000
 '''
+
+
+
+# cam58's own look (stop 58): a ROCKING roller follower turned by a CLOCKWISE cam, a parabolic rise of 120°, a far
+# dwell of 40°, a LINEAR return of 100° (rigid shocks at its ends: corners K1 convex, K2 concave), a near dwell of 100°.
+OWN_CAM58 = """title = "Кулачковий механізм з коромисловим роликовим штовхачем (власний 58)"
+title_en = "Cam with a rocking roller follower (own 58)"
+designation = "ТММ.КМ.58.200"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-58"
+organisation = "НУБіП України"
+
+[cam]
+follower = "rocking"
+swing_deg = 20
+arm = 0.1
+centre_distance = 0.12
+roller_radius = 0.01
+phases_deg = { rise = 120, dwell_far = 40, return = 100, dwell_near = 100 }
+laws = { rise = "parabolic", return = "linear" }
+pressure_angle_deg = { rise = 40, return = 45 }
+rpm = 100
+direction = "cw"
+divisions = 8
+"""

@@ -90,7 +90,6 @@ def _laid_sheet(path, lang):
     (2.6, 1.9, 1.5, 1.6; H1 30, H2 42 mm, the series' scales), without the search: the leaves laid
     (sheets.cam._laid) — the pressure angle's diagram under the s–v–a diagrams (with_theta) —, placed."""
     from types import SimpleNamespace
-    from graphplan.drawing.layout import centred
     from graphplan.exact.cam import solve
     from graphplan.graphic.cam import construct
     from graphplan.sheets import cam as sc
@@ -100,7 +99,7 @@ def _laid_sheet(path, lang):
     leaves, tab, nts, doc = sc._leaves(sol, g, sol.cam, lang)
     f = form("A1")
     (page,) = sc._laid(f, leaves, tab, nts, sc._notes_at(doc, lang, sol.cam))
-    placed = [q for leaf, b in page for q in sc.apart(leaf.name, (sc.at_top if leaf.name in ("profile", "diagrams") else centred)(leaf.record, b), b, page,
+    placed = [q for leaf, b in page for q in sc.apart(leaf.name, sc.place(f, leaf, b), b, page,
                                                        getattr(leaf.record, "parts", None),
                                                        getattr(leaf.record, "theta_at", None))]
     return SimpleNamespace(form=f, placed=placed)

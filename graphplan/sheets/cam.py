@@ -178,6 +178,7 @@ def beside(diagrams: Record, phase: Record, caps: dict, rocking: bool = False, p
     out.hole = (left.bounds()[2] + 2 * GAP, right.bounds()[1] + dy)     # see hole()
     out.parts = len(left.items)                                          # see apart()
     out.theta_at = getattr(left, "theta_at", None)
+    out.flush = True            # placed at the top left of its column (hole, place; cam_sizes sizes it centred first)
     return out
 
 
@@ -206,6 +207,8 @@ def apart(name: str, rec: Record, box: Box, page, n: int | None = None, theta_at
     right = Record("phase diagram", rec.items[n:], {})
     lb, pb = left.bounds(), right.bounds()
     xm = lb[2] + GAP
+    # the phase diagram in the middle of the room right of the diagrams (at_top_left: the spare width there)
+    right = right.moved(max(0.0, (xm + GAP + box[2]) / 2 - (pb[0] + pb[2]) / 2), 0.0)
     return [Placed(name, left, (box[0], box[1], xm, box[3])),
             Placed("phase", right, (xm, pb[1] - GAP / 2, box[2], box[3]))]
 
@@ -217,6 +220,23 @@ def at_top(rec: Record, box: Box) -> Record:
     return rec.moved((box[0] + box[2]) / 2 - (x0 + x1) / 2, box[3] - y1)
 
 
+def at_top_left(rec: Record, box: Box) -> Record:
+    """The record at the top left of ``box`` (the A1 sheet's diagrams with the phase diagram beside them:
+    the column's spare width goes to the room under the phase diagram — the notes and ϑ(φ) at the
+    diagrams' μ_φ, so a finer μ_φ fits there —, not half of it to a blank strip left of the poles:
+    stop 57's CAM57 49 mm, CAM55 36 mm; apart() centres the phase diagram over that room)."""
+    x0, _, _, y1 = rec.bounds()
+    return rec.moved(box[0] - x0, box[3] - y1)
+
+
+def place(f: Form, leaf: Leaf, box: Box) -> Record:
+    """A leaf's record in its box: on A1 the diagrams at the top left of their column (at_top_left, as
+    hole() takes them), the profile at the top of its column (no band over it); else centred."""
+    if f.name == "A1" and leaf.name == "diagrams" and getattr(leaf.record, "flush", False):
+        return at_top_left(leaf.record, box)
+    return (at_top if f.name == "A1" and leaf.name == "profile" else centred)(leaf.record, box)
+
+
 def hole(dia: Leaf, box: Box) -> Box | None:
     """The room under the phase diagram beside the ds/dφ and d²s/dφ² diagrams (review 4, item 19:
     (375–570, 335–590) mm of the A1 sheet was blank) when the diagrams' leaf stands at the top of
@@ -226,7 +246,8 @@ def hole(dia: Leaf, box: Box) -> Box | None:
     if at is None:
         return None
     x0, y0, x1, y1 = dia.record.bounds()
-    dx, dy = (box[0] + box[2]) / 2 - (x0 + x1) / 2, box[3] - y1     # at the top (at_top): the room under it
+    dx, dy = (box[0] - x0 if getattr(dia.record, "flush", False) else (box[0] + box[2]) / 2 - (x0 + x1) / 2,
+              box[3] - y1)          # at the top (left: at_top_left, else at_top): the room under it
     return at[0] + dx, box[1], box[2], at[1] + dy - GAP
 
 
@@ -407,6 +428,8 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
         return memo[(name, key)]
 
     hole = [f.name == "A1"]                # ϑ(φ) under the notes (_arranged) while the sizes allow it
+    flush = [False]                        # the diagrams centred in their column while the sizes are chosen,
+    # then at its left (as the sheet places them): the spare width to the room under the phase diagram
 
     def theta(g, lang):
         if ("pressure", g.mu_phi, g.mu_s, lang) not in memo:
@@ -415,15 +438,16 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
 
     def leaf(name, key, g, lang):
         column = not hole[0]
-        if (name, key, lang, column) not in memo:
+        if (name, key, lang, column, flush[0]) not in memo:
             caps = _captions(g, sol.cam, lang)
             if name == "diagrams":
                 rec = beside(drawing("diagrams", diagrams, key[:5], g), drawing("phase", phase_diagram, (key[2], key[5]), g),
                              caps, sol.cam.rocking, theta(g, lang) if column else None)
+                rec.flush = flush[0]
             else:
                 rec = captioned(drawing(name, profile_drawing, key, g), *caps[name])
-            memo[(name, key, lang, column)] = Leaf(name, record=rec)
-        return memo[(name, key, lang, column)]
+            memo[(name, key, lang, column, flush[0])] = Leaf(name, record=rec)
+        return memo[(name, key, lang, column, flush[0])]
 
     def notes_at(g, lang):
         if not hole[0]:
@@ -477,6 +501,23 @@ def cam_sizes(sol, f: Form, n: int | None = None, precision: float = 0.5
         k = (_largest(lambda x: fits(x, kp, kh, ka, True), longer) if longer else None) or k
     g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka, series="rad")
     h1, h2 = _poles(g.H1, g.H2, lambda p: fits(k, kp, kh, ka, False, p)) if f.name == "A1" else (None, None)
+    if f.name == "A1":
+        # the diagrams at the left of their column, as the sheet places them (at_top_left; stop 57:
+        # centred, CAM57's left 49 mm blank left of the poles, CAM55's 36): the room under the phase
+        # diagram, where the notes and ϑ(φ) at the diagrams' μ_φ stand, takes the column's spare width —
+        # the abscissa longer once more where it then fits, kept where the s, ds/dφ, d²s/dφ² diagrams
+        # (with their poles found again) cover WIDER more (the rule _taller keeps for a coarser μ_φ:
+        # CAM57's 0,02 рад/мм drew them 10 % larger but its ds/dφ 37 % shorter, H_1 25 → 40 mm)
+        flush[0] = True
+        longer = [x for x in SIZES if x > k]
+        k2 = (_largest(lambda x: fits(x, kp, kh, ka, True), longer) if longer else None) or k
+        if k2 > k:
+            g2 = construct(sol, n, precision, size=k2, profile_size=kp, height=kh, measure=False, accel=ka,
+                           series="rad")
+            p2 = _poles(g2.H1, g2.H2, lambda p: fits(k2, kp, kh, ka, False, p))
+            if _drawn_area(leaf, sol, n, precision, k2, kp, kh, ka, p2) > WIDER * _drawn_area(
+                    leaf, sol, n, precision, k, kp, kh, ka, (h1, h2)):
+                k, (h1, h2) = k2, p2
     # (a rocking follower's ψ diagram is not made taller by a shorter H_2: at series scales μ_ψ is
     # the series' (kh), and a shorter H_2 would only coarsen μ_{dψ/dφ} and μ_{d²ψ/dφ²})
     # the trials reuse a drawing per scale; the finished drawings (their own points and letters, the
@@ -532,6 +573,16 @@ def _taller(k, kp, kh, ka, fits, area) -> tuple[float, float, float]:
         if fits(k2, kp, kh2, ka2) and a2 > 1.15 * best_area:     # worth a coarser μ_φ: 15 % more drawing
             best, best_area = (k2, kh2, ka2), a2
     return best
+
+
+def _drawn_area(leaf, sol, n, precision, k, kp, kh, ka, poles) -> float:
+    """The area (mm²) of the s, ds/dφ, d²s/dφ² diagrams alone (beside's first ``parts`` items) at these
+    sizes and pole distances."""
+    g = construct(sol, n, precision, size=k, profile_size=kp, height=kh, measure=False, accel=ka, H1=poles[0],
+                  H2=poles[1], series="rad")
+    rec = leaf("diagrams", (g.mu_phi, g.mu_a, g.mu_s, g.H1, g.H2, g.mu_l), g, "en").record
+    b = Record(rec.title, rec.items[:rec.parts], {}).bounds()
+    return (b[2] - b[0]) * (b[3] - b[1])
 
 
 def _area(leaf, sol, n, precision, k, kp, kh, ka) -> float:
@@ -1297,10 +1348,8 @@ def build_cam_sheet(cam: Cam, f: Form, args: SheetOptions) -> Sheet:
                    key=lambda c: c[:2])[2] if same else (own if placed(own) else laid)
     if laid is None:
         raise said_error(GraphplanError, "sh cam larger", None, None, form=f.name, option="--format")
-    def place(leaf: Leaf, box: Box) -> Record:      # A1: the profile at the top of its column (no band over it)
-        return (at_top if f.name == "A1" and leaf.name in ("profile", "diagrams") else centred)(leaf.record, box)
     pages = [[q for leaf, b in page if leaf.record is not None
-              for q in apart(leaf.name, place(leaf, b), b, page, getattr(leaf.record, "parts", None),
+              for q in apart(leaf.name, place(f, leaf, b), b, page, getattr(leaf.record, "parts", None),
                              getattr(leaf.record, "theta_at", None))]
              for page in laid]
     if len(pages) > 1:
