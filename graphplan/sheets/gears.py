@@ -1384,8 +1384,13 @@ def zones(drawings: list[Leaf], side: list[Leaf], f: Form, width: float) -> list
     x0, y0, x1, y1 = field_of(f)
     keep = keep_out(f)
     right = max(width, x1 - keep[0])
-    need = sum(t.h for t in side) + GAP * (len(side) - 1)
-    if need > y1 - keep[3] - GAP:
+    tall = sum(t.h for t in side)
+    apart = (len(side) - 1) or 1
+    # the column's parts GAP apart, closer (to COLUMN_GAP) where that keeps its tables' size: stop 57's x_min
+    # note took one line more and GEARS51's English column needed 513 mm for 512, its tables fell to 2,5 mm
+    gap = max(COLUMN_GAP, min(GAP, (y1 - keep[3] - GAP - tall) / apart))
+    need = tall + gap * (len(side) - 1)
+    if need > y1 - keep[3] - GAP + 1e-9:
         return None
     room = drawings_room(f, width)
     mesh_w = sum(d.w for d in drawings if d.name == "meshing")
@@ -1428,8 +1433,11 @@ def zones(drawings: list[Leaf], side: list[Leaf], f: Form, width: float) -> list
             y = keep[3] + GAP + t.h
         box = (x1 - right, y - t.h, x1, y)
         out.append(Placed(t.name, top_left_of(t.record, box), box))
-        y = box[1] - GAP - (spare if t is not tabs[-1] else 0.0)
+        y = box[1] - gap - (spare if t is not tabs[-1] else 0.0)
     return [out]
+
+
+COLUMN_GAP = 4.0         # the least gap between the column's tables and notes, mm (``zones``; GAP where it fits)
 
 
 def top_left_of(rec: Record, box) -> Record:
