@@ -48,3 +48,52 @@ def test_a_column_too_tall_for_the_least_gaps_is_refused():
     notes = room + 3 * (GAP - COLUMN_GAP) + 0.1 - sum(hs) - 3 * GAP
     side = [_box(n, 180.0, h) for n, h in zip(("geometry", "quality", "train"), hs)] + [_box("notes", 180.0, notes)]
     assert zones([_box("meshing", 300.0, 300.0)], side, f, 185.0) is None
+
+
+def test_pictures_whose_printed_bounds_agree_tie():
+    """``_rank`` with u1H compares the bounds as the notes print them (% of u1H to 0,01): ±0,805 % and
+    ±0,808 % are both «±0,81 %» and tie (``_grown`` then keeps the larger scheme); ±0,80 against ±0,81 does not."""
+    from types import SimpleNamespace as NS
+    from graphplan.sheets.gears import _rank
+    v = lambda b: NS(h=50.0, segments={"H": 30.0}, ratio_bound=b)      # noqa: E731
+    u = 5.1
+    assert _rank(v(0.0410747), u) == _rank(v(0.0412108), u)
+    assert _rank(v(0.0410747)) < _rank(v(0.0412108))                  # (bare, the narrower still wins)
+    assert _rank(v(0.0407), u) < _rank(v(0.0413), u)
+
+
+@pytest.mark.slow
+def test_the_planetary_pictures_take_the_larger_scheme_where_the_printed_bound_is_the_same():
+    """Stop 58 (the blind reviewer's 13/30 + 20/31/82 on A1): the pictures stood at 1:2, 273 × 165 mm, in a
+    257-mm row beside 146-mm λ diagrams, a 50-mm blank under their caption, because 1:2 read u1H within
+    ±0,805 % where 1:1 read within ±0,808 % — one bound on the sheet, «±0,81 %». Now: of the pictures
+    ``_grown`` tried, the chosen one has the narrowest printed bound and, among those, the largest scheme."""
+    import tomllib
+    import graphplan.sheets.gears as G
+    from graphplan.exact.gears import solve
+    from graphplan.model.gears import build
+    from graphplan.sheets.form import form
+    from review_scenes import GEARS58B
+    tried = []
+    filled = G.filled
+
+    def spy(*a, **kw):
+        d = filled(*a, **kw)
+        if d is not None and not kw.get("full"):
+            tried.append(d[0])
+        return d
+    G.filled = spy
+    try:
+        sol = solve(build(tomllib.loads(GEARS58B), "GEARS58B"))
+        mesh, vel, plan = G.construct_on(sol, form("A1"), 0.5, "uk")
+    finally:
+        G.filled = filled
+    u = sol.train.ratio
+    pr = lambda v: (v.h < G.H_MIN - 1e-9, round(100.0 * v.ratio_bound / u, 2))     # noqa: E731
+    assert len({round(v.mu_l, 9) for v in tried}) >= 2
+    best = min(pr(v) for v in tried)
+    assert pr(vel) == best
+    assert vel.mu_l == min(v.mu_l for v in tried if pr(v) == best)      # the largest scheme of the tie
+    assert vel.ratio_bound / u * 100 <= G.LAB_LIMIT
+    # the pictures no shorter than the λ diagrams beside them (the row's blank under them gone)
+    assert G._size(plan)[1] >= G._size(G.sliding_leaf(mesh.lam, "uk"))[1]
