@@ -8041,3 +8041,31 @@ rpm = 100
 direction = "cw"
 divisions = 8
 """
+
+
+# gears58b: stop 58's blind reviewer's gear scene (review58-scratch/d_gears.toml): a 13/30 pair with given
+# shifts beside a type-A 20/31/82 train — its A1 planetary pictures stood at 1:2 over a 50-mm blank.
+GEARS58B = '''# review58 (d): a pair 13/30 with GIVEN shifts x1 = 0.40, x2 = 0.15, m = 5 mm, and a one-row planetary
+# train of type A with GIVEN teeth 20/31/82 (u1H = 1 + 82/20 = 5.1), K = 3, 1450 rpm.
+title = "Зубчаста передача 13/30 і планетарний редуктор (рецензія 58)"
+title_en = "A gear pair 13/30 and a planetary reducer (review 58)"
+designation = "ТММ.ЗП.58.600"
+
+[sheet]
+student = "Рецензент Р. Р."
+teacher = "Викладач В. В."
+group = "МБ-58"
+organisation = "НУБіП України"
+
+[gears]
+z = [13, 30]
+module = 0.005
+shifts = [0.40, 0.15]
+
+[planetary]
+type = "A"
+z = [20, 31, 82]
+planets = 3
+module = 0.002
+rpm = 1450
+'''

@@ -719,7 +719,7 @@ def _grown(tr, precision: float, lang: str, f: Form, mesh, plan: Record, vel, pa
         for va_share in SCHEME_SHARES:    # the longer vA where it fits (the plan then no taller for its S)
             d = filled(tr, precision, lang, ring, 60.0 * ring / 80.0 * va_share, room_w, room_h, min(H_MIN, vel.h))
             if d is not None:
-                if best is None or _rank(d[0]) < _rank(best[0]):
+                if best is None or _rank(d[0], tr.ratio) < _rank(best[0], tr.ratio):   # (a tie: the larger)
                     best = d
                 if d[0].h >= H_MIN - 1e-9:
                     break         # (else a shorter vA may still give h ≥ H_MIN: stop 55, the lead's 14/56 in
@@ -764,11 +764,15 @@ def _whole(best, whole, u: float):
     return whole
 
 
-def _rank(v) -> tuple:
+def _rank(v, u: float | None = None) -> tuple:
     """The planetary pictures' order of preference on the A1 sheet: h at least ``H_MIN`` and the carrier's
     segment at least ``SEGMENT_MIN`` (what a teacher reads with the ruler: review 13's ωH off 3,8 mm), then
-    the narrowest bound of u1H."""
-    return (v.h < H_MIN - 1e-9, abs(v.segments["H"]) < SEGMENT_MIN - 1e-9, v.ratio_bound)
+    the narrowest bound of u1H — with ``u`` (the exact u1H) as the notes print it, in % of u1H to 0,01, so
+    that pictures the notes give the same bound tie and ``_grown`` keeps the larger scheme (stop 58: a
+    13/30 pair's 20/31/82 train stood at 1:2, 273 × 165 mm, ±0,805 %, over a 50-mm blank in a 257-mm row,
+    where 1:1 — 272 × 196 mm — reads within ±0,808 %: both «±0,81 %»)."""
+    b = v.ratio_bound if u is None else round(100.0 * v.ratio_bound / abs(u), 2)
+    return (v.h < H_MIN - 1e-9, abs(v.segments["H"]) < SEGMENT_MIN - 1e-9, b)
 
 
 def construct_on(sol, f: Form, precision: float = 0.5, lang: str = "uk"):
@@ -1384,8 +1388,13 @@ def zones(drawings: list[Leaf], side: list[Leaf], f: Form, width: float) -> list
     x0, y0, x1, y1 = field_of(f)
     keep = keep_out(f)
     right = max(width, x1 - keep[0])
-    need = sum(t.h for t in side) + GAP * (len(side) - 1)
-    if need > y1 - keep[3] - GAP:
+    tall = sum(t.h for t in side)
+    apart = (len(side) - 1) or 1
+    # the column's parts GAP apart, closer (to COLUMN_GAP) where that keeps its tables' size: stop 57's x_min
+    # note took one line more and GEARS51's English column needed 513 mm for 512, its tables fell to 2,5 mm
+    gap = max(COLUMN_GAP, min(GAP, (y1 - keep[3] - GAP - tall) / apart))
+    need = tall + gap * (len(side) - 1)
+    if need > y1 - keep[3] - GAP + 1e-9:
         return None
     room = drawings_room(f, width)
     mesh_w = sum(d.w for d in drawings if d.name == "meshing")
@@ -1428,8 +1437,11 @@ def zones(drawings: list[Leaf], side: list[Leaf], f: Form, width: float) -> list
             y = keep[3] + GAP + t.h
         box = (x1 - right, y - t.h, x1, y)
         out.append(Placed(t.name, top_left_of(t.record, box), box))
-        y = box[1] - GAP - (spare if t is not tabs[-1] else 0.0)
+        y = box[1] - gap - (spare if t is not tabs[-1] else 0.0)
     return [out]
+
+
+COLUMN_GAP = 4.0         # the least gap between the column's tables and notes, mm (``zones``; GAP where it fits)
 
 
 def top_left_of(rec: Record, box) -> Record:
