@@ -1,6 +1,6 @@
 """Stop 58: the lead's V-twin compressor (LINK58: one crank O1A = 50 mm, two rods AB = AC = 200 mm pinned at
 the crank pin, pistons B and C on guides through O1 at 60° and 120°, 720 rpm clockwise, 900 N on each
-piston over the output B's working stroke, q = 20 kg/m, I_S = 0.1·m·l², the pistons 2.5 kg, δ = 1/40,
+piston over its own compression stroke — outwards, to its cylinder head, working_stroke = "to_max" —, q = 20 kg/m, I_S = 0.1·m·l², the pistons 2.5 kg, δ = 1/40,
 a 1500-rpm motor). The truth here is this file's own: the V's closed-form kinematics (each piston on its
 line, s = r·cos(φ − α) + √(l² − r²·sin²(φ − α))), velocities by five-point differences, the reduction by
 the kinetic energy and by the power, the work by Simpson's rule split at the load's breaks, the steady
@@ -32,7 +32,8 @@ I_ROD, I_CRANK = K * M_ROD * L * L, K * M_CRANK * R * R
 F = 900.0
 W1 = 720 * math.pi / 30
 DELTA = 1 / 40
-PHI0 = math.radians(60)               # position 0: B at its outer dead centre (the crank along B's guide)
+PHI0 = math.radians(240)              # position 0: B at its inner dead centre (the crank pointing away from B's guide,
+                                      # where B's compression, the working stroke "to_max", starts)
 GUIDES = (math.radians(60), math.radians(120))
 
 
@@ -55,18 +56,21 @@ def _rates(turn: np.ndarray, h: float = 1e-4) -> dict[str, np.ndarray]:
 
 
 def _reduced(turn: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """I*_m and M*_c (+ resisting) at ``turn``: the forces act over B's working stroke, from position 0
-    half a turn (its two strokes are equal; the one starting at position 0, as the scene's start asks)."""
+    """I*_m and M*_c (+ resisting) at ``turn``: each piston's force acts while that piston moves outwards
+    along its own guide (its compression), against its motion."""
     d = _rates(turn)
     inertia = (I_CRANK + M_ROD * (np.abs(d["SB"]) ** 2 + np.abs(d["SC"]) ** 2) + I_ROD * (d["psiB"] ** 2 + d["psiC"] ** 2)
                + M_PISTON * (np.abs(d["B"]) ** 2 + np.abs(d["C"]) ** 2))
     gravity = -G * (M_ROD * (d["SB"].imag + d["SC"].imag) + M_PISTON * (d["B"].imag + d["C"].imag))
-    working = np.mod(turn, 2 * math.pi) < math.pi
-    forces = np.where(working, -F * (np.abs(d["B"]) + np.abs(d["C"])), 0.0)
+    forces = 0.0
+    for name, alpha in zip("BC", GUIDES):
+        out = (d[name] * np.exp(-1j * alpha)).real             # d(s)/dφ along the guide, + outwards
+        forces = forces + np.where(out > 0, -F * np.abs(d[name]), 0.0)
     return inertia, -(gravity + forces)
 
 
-# the load's breaks: B's dead centres (the force switches) and C's (its force turns with C's velocity)
+# the load's breaks: B's dead centres (turn 0°, 180°: its force switches) and C's (120°, 300°: the crank along
+# C's guide at 120° and away from it at 300°, 60° of clockwise turn after B's)
 BREAKS = np.radians([0.0, 120.0, 180.0, 300.0, 360.0])
 EPS = 1e-9
 
@@ -83,9 +87,10 @@ def test_the_v_twins_reduced_inertia_and_moment_at_the_positions(study58):
     inertia, moment = _reduced(turn)
     assert np.allclose(got.inertia, inertia, rtol=1e-8, atol=1e-12)
     assert np.allclose(got.moment, moment, rtol=1e-7, atol=1e-7)
-    # the hand checks: position 0 (B at its dead centre) I* = I_S1 + the rods' and C's share
-    assert got.inertia[0] == pytest.approx(0.02095, abs=5e-6)
-    assert got.moment[2] == pytest.approx(72.522, abs=1e-3)                  # the largest of the twelve
+    # the model's own numbers, as the sheet's Table 1 prints them: position 0 (B at its inner dead centre)
+    # I* = 0.01720 kg·m²; both pistons compress over positions 1–4, the largest M*_c at position 2
+    assert got.inertia[0] == pytest.approx(0.017200, abs=5e-6)
+    assert int(np.argmax(got.moment)) == 2 and got.moment[2] == pytest.approx(83.362, abs=1e-3)
 
 
 def _simpson(f, a: float, b: float, n: int = 400) -> float:
@@ -98,8 +103,8 @@ def test_the_v_twins_work_and_driving_moment(study58):
     from graphplan.exact.dynamics import cycle
     work = sum(_simpson(lambda t: _reduced(t)[1], a + EPS, b - EPS) for a, b in zip(BREAKS[:-1], BREAKS[1:]))
     c = cycle(study58)
-    assert c.work == pytest.approx(work, rel=1e-6)                        # A_c = 171.46 J
-    assert c.driving == pytest.approx(work / (2 * math.pi), rel=1e-6)     # M*_d = 27.289 N·m
+    assert c.work == pytest.approx(work, rel=1e-6)
+    assert c.driving == pytest.approx(work / (2 * math.pi), rel=1e-6)
 
 
 def _grid(step_deg: float = 0.05):
@@ -150,7 +155,7 @@ def test_the_v_twins_flywheels_and_steady_states_by_an_independent_integration(s
         w = np.sqrt(2 * (t0 + energy) / (inertia + j))
         return [(w.max() - w.min()) / W1 - DELTA, 0.5 * (w.max() + w.min()) / W1 - 1.0]
     j, t0 = fsolve(classical, [0.5, 0.25 * W1 * W1], xtol=1e-12)
-    assert dyn.flywheel_total == pytest.approx(j, rel=2e-4)                  # J = 0.4888 kg·m²
+    assert dyn.flywheel_total == pytest.approx(j, rel=2e-4)                  # J = 0.7100 kg·m²
     w = np.sqrt(2 * (t0 + energy) / (inertia + j))
     assert dyn.motion.omega_max == pytest.approx(w.max(), rel=1e-5)
     assert dyn.motion.omega_min == pytest.approx(w.min(), rel=1e-5)
@@ -173,10 +178,10 @@ def test_the_v_twins_flywheels_and_steady_states_by_an_independent_integration(s
         w = steady(fl)
         return (w.max() - w.min()) / (0.5 * (w.max() + w.min()))
     fl = brentq(lambda x: delta(x) - DELTA, 0.5 * dyn.motor_flywheel, 2.0 * dyn.motor_flywheel, xtol=1e-7)
-    assert dyn.motor_flywheel == pytest.approx(fl, rel=2e-4)                 # I_fl = 0.2435 kg·m²
+    assert dyn.motor_flywheel == pytest.approx(fl, rel=2e-4)                 # I_fl = 0.2846 kg·m²
     w = steady(dyn.motor_flywheel)
-    assert dyn.motor_motion.omega_max == pytest.approx(w.max(), rel=1e-5)   # 77.93 rad/s
-    assert dyn.motor_motion.omega_min == pytest.approx(w.min(), rel=1e-5)   # 76.01 rad/s
+    assert dyn.motor_motion.omega_max == pytest.approx(w.max(), rel=1e-5)   # 77.94 rad/s
+    assert dyn.motor_motion.omega_min == pytest.approx(w.min(), rel=1e-5)   # 76.02 rad/s
 
 
 def test_the_motors_shooting_settles_in_a_few_integrations():
