@@ -8069,3 +8069,82 @@ planets = 3
 module = 0.002
 rpm = 1450
 '''
+
+
+
+# scales58 (stop 58): the blind reviewer's English crank-rocker of a paddle agitator (review 58 #2: its A2 and A3
+# kinematics sets drew the acceleration plans at the lab's own 0.0272 (m/s²)/mm, its A2 forces set group
+# II(2-3)'s force plan at 1.5 N/mm — scales off the standard series)
+AGITATOR_SCALES58 = '''# review58 (b): in ENGLISH, a crank-rocker four-bar of a paddle agitator: the crank O1A turns counter-clockwise,
+# the rocker O2B carries the paddle; a 45 N·m resistance moment on the rocker over its working (slow) swing,
+# a 150 N force at the coupler's point E against E's motion on both strokes; masses by length, and [dynamics].
+title = "Шарнірний чотириланковий механізм мішалки"
+title_en = "Crank-rocker four-bar of a paddle agitator"
+designation = "TMM.KP.58.200"
+lang = "en"
+
+[sheet]
+student = "Reviewer R. R."
+teacher = "Teacher T. T."
+group = "MB-58"
+organisation = "NULES of Ukraine"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.40, 0.10]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.10
+rpm = 60
+direction = "ccw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.38
+points = { S2 = 0.5, E = [0.19, -0.08] }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.26
+points = { S3 = 0.5 }
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "working"
+output = "O2B"
+accel = [4]
+force_phi_deg = 150
+
+[loads]
+g = 9.81
+mass_per_length = 25
+inertia_factor = 0.1
+
+[[moment]]
+link = "O2B"
+magnitude = 45
+stroke = "working"
+direction = "oppose"
+
+[[force]]
+point = "E"
+magnitude = 150
+stroke = "both"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 750
+'''

@@ -1333,7 +1333,7 @@ def _plan_grown(nat: Natural, best: tuple, tried) -> Plan:
     fam = nat.families["acceleration"]
     m = floor["acceleration"]
     while fam.rel(m) < 1.0 - 1e-9:
-        m = next_round(m)          # the series' next step or GOST 2.302's 1.5, 7.5 between (0.1 → 0.075)
+        m = next_series(m)         # the series' next step (review 58 #2: not GOST's 1.5, 7.5 between)
         if m is None or fam.rel(m) > _set_largest(nat, "acceleration") + 1e-9:
             break                  # (no larger than a set grows it: the shaper's 0.75 → 0.5 drew it 1.45 times)
         trials = [tried({**floor, "acceleration": m}, cap, p.tables, pf, p.gap) for pf in (True, False)]
@@ -1547,6 +1547,15 @@ def next_round(mu: float) -> float | None:
     return nxt[0] if nxt else None
 
 
+def next_series(mu: float) -> float | None:
+    """The next coefficient of the standard series 1, 2, 2.5, 4, 5 × 10^k drawing larger than μ
+    (2 N/mm → 1, not GOST's 1.5): a set's force plans and acceleration plan grown into their
+    sheets' room print a μ of the series, as its A1 sheet's and docs require (review 58 #2: the
+    crank-rocker's A2 set drew group II(2-3)'s plan at 1.5 N/mm, its A1 and A3 at 2)."""
+    from graphplan.sheets.compose import finer
+    return finer(mu) if mu > 0 and math.isfinite(mu) else None
+
+
 def next_length(mu_l: float) -> float | None:
     """``next_round`` for a length scale (the scheme, a group): the next that is a GOST 2.302
     drawing scale (graphic.scales.gost_length) — 0.001 → 0.0005 (2:1), not 0.00075 (the title
@@ -1599,7 +1608,7 @@ def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
                 key = key_of(fam, i)
                 base = mu.get(key, mu[fam])
                 nxt = fams[fam].finer(base) if fams[fam].factors else (
-                    next_length(base) if fam in ("scheme", "groups") else next_round(base))
+                    next_length(base) if fam in ("scheme", "groups") else next_round(base) if one else next_series(base))
                 # the scheme never larger than the groups cut from it where it would take much
                 # of its sheet (review 6 #4, ``_scheme_aside``)
                 if nxt is None or fams[fam].rel(nxt) > FILL_LARGEST[fam] + 1e-9 \

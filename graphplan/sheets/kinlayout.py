@@ -1044,6 +1044,19 @@ def grid_rows(cells_: list[Leaf], k: int) -> list[list[Leaf]]:
     return rows
 
 
+def series_choices(value: float, mu: float, longest_mm: float) -> list[float]:
+    """The standard series' coefficients (1, 2, 2.5, 4, 5 × 10^k) that draw ``value`` larger than
+    ``mu`` does, up to ``longest_mm``, the smallest drawing first: a set's plans grown into the room
+    its sheets give (``set_of_sheets``) at the series' scales, as docs and LAYOUT require ("the
+    largest standard value whose drawings fit") — not GOST 2.302's 1.5, 7.5 × 10^k nor the lab's
+    own π a chosen in 5-mm steps (review 58 #2: 0.0272 (m/s²)/mm, π a 145 mm)."""
+    from graphplan.graphic.scales import series_around
+    if not (value > 0 and mu > 0 and math.isfinite(value / mu)):
+        return []
+    return sorted((m for m in series_around(mu) if m < mu * (1 - 1e-9) and value / m <= longest_mm + 1e-9),
+                  reverse=True)
+
+
 def just_legible(fam: Family) -> float:
     """The coarsest μ at which the family's plans read: the series' (``_legible``) or the lab's own,
     p_v a (π a) chosen ``LEGIBLE_MM`` long (``legible_where_room``), whichever draws them smaller."""
@@ -1234,7 +1247,8 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     # not only the series' next, twice the drawing: the six-bar's A3 velocity plans at 0.01 drew
     # p_v a 69 mm, four cells a row, three rows missing a sheet by 7 mm — sheets 27 % filled), then
     # grown in the steps ``larger_choices`` gives while the set needs no more sheets
-    floor = {fam: just_legible(fams[fam]) for fam in ("velocity", "acceleration")}
+    # … at the standard series' scales (review 58 #2): the coarsest of the series that reads (``_legible``)
+    floor = {fam: _legible(fams[fam]) for fam in ("velocity", "acceleration")}
     def fitted(fam: str, mu: float) -> float:
         """The finest μ from ``mu`` on at which the family fits an empty sheet; a family no μ fits
         (a size that does not shrink: lettering alone, or no finite size) is refused in one line."""
@@ -1250,11 +1264,10 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     top = fitted("position", fams["position"].start(2.0))
 
     def grown(fam: str, mu: float) -> list[float]:
-        """The velocity or acceleration plans' larger scales, smallest drawing first: ``larger_choices``
-        (the series, GOST 2.302's 1.5, 7.5 × 10^k, the lab's own p_v a in 5-mm steps) — the room a
-        sheet has given out in steps, not by doubling."""
-        from graphplan.graphic.scales import larger_choices
-        return [m for m, _ in larger_choices(fams[fam].principal, mu, fams[fam].target * SET_LARGEST)]
+        """The velocity or acceleration plans' larger scales, smallest drawing first: the standard
+        series' (``series_choices``; review 58 #2: the crank-rocker's A2 and A3 sets drew π a 145 mm
+        at the lab's own 0.0272 (m/s²)/mm where the A1 draws 0.025)."""
+        return series_choices(fams[fam].principal, mu, fams[fam].target * SET_LARGEST)
     best = None
     short = short_vectors(dr)
     r = room(f, later=True)      # the diagrams go on a later sheet where they do not fit beside the plan
