@@ -8148,3 +8148,24 @@ delta = 0.05
 efficiency = 0.9
 synchronous_rpm = 750
 '''
+
+
+# cam58b (review 58 #5): a translating roller follower, a GIVEN negative offset e = −6 mm, the cam clockwise, a
+# GIVEN R0 = 40 mm below the smallest (45,88 mm): O_min lettered below O, «*» both meanings in the legend
+CAM58B_SMALL_R0 = '''title = "Кулачковий механізм з дезаксіальним роликовим штовхачем (рецензія 58)"
+title_en = "Disc cam with an offset translating roller follower (review 58)"
+designation = "ТММ.КМ.58.500"
+
+[cam]
+follower = "translating"
+stroke = 0.035
+offset = -0.006
+base_radius = 0.04
+roller_radius = 0.012
+phases_deg = { rise = 110, dwell_far = 30, return = 100, dwell_near = 120 }
+laws = { rise = "cosine", return = "parabolic" }
+pressure_angle_deg = { rise = 30, return = 40 }
+rpm = 120
+direction = "cw"
+divisions = 8
+'''

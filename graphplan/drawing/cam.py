@@ -653,10 +653,11 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         arc = A + abs(A) * np.exp(1j * t)
         rec.add("polyline", list(zip(arc.real, arc.imag)), role="trajectory", layer=LAYER, step="O locus")
         labels.append(LabelRequest(complex(arc[0]), "a", toward=1 + 0j, size=TEXT, step="O locus"))
-    if not cam.rocking and math.isfinite(g.R0_drawn) and sol.geometry.R0 > g.R0_drawn:
+    if not cam.rocking and math.isfinite(g.R0_drawn) and abs(sol.geometry.R0 - g.R0_drawn) > 1e-9:
         # a given R0 above the smallest: the region's point on O's line nearest C₀, O_min, marked —
         # |O_min C₀| the smallest R0 the notes print as read off the diagram (stop 50: only the given
-        # R0 was drawn, under a title naming the smallest)
+        # R0 was drawn, under a title naming the smallest); a given R0 BELOW the smallest the same, O_min
+        # then below O, O outside the region (review 58 #5: the caption named the smallest, unmarked)
         e = sol.geometry.e
         O_min = 1j * (math.sqrt(sol.geometry.R0 ** 2 - e ** 2) - math.sqrt(g.R0_drawn ** 2 - e ** 2)) / mu
         if abs(O_min - O) >= O_MIN_APART:
@@ -707,7 +708,7 @@ def _chosen_R0(sol, g, lang: str) -> str:
     where it is over the smallest read off the diagram — O is then the centre chosen in the region, not
     its vertex (review 52: O, 2 mm under the vertex, was read as drawn at the smallest R₀ = 38,2 while the
     profile took 39 mm); else «R_0»."""
-    if sol.cam.rocking or not math.isfinite(g.R0_drawn) or sol.geometry.R0 <= g.R0_drawn + 1e-9:
+    if sol.cam.rocking or not math.isfinite(g.R0_drawn) or abs(sol.geometry.R0 - g.R0_drawn) <= 1e-9:
         return "R_0"
     from graphplan.util.words import num
     return f"R_0 = {num(sol.geometry.R0 * 1000.0, lang, 3)} {'мм' if lang == 'uk' else 'mm'}"

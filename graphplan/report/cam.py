@@ -356,6 +356,14 @@ def _tenth(x: float, lang: str) -> str:
     return t[:-2] if t[-2:] in (",0", ".0") else t
 
 
+def angles_over(doc: dict[str, Any]) -> list[str]:
+    """The phases ("rise", "return") whose largest pressure angle exceeds the allowed one — each marked
+    «*» in the notes (and on ϑ(φ)), the sheet's legend saying so."""
+    top = doc.get("pressure_angle_extreme_deg") or doc["pressure_angle_max_deg"]
+    return [k for k in ("rise", "return")
+            if abs(top[k]) > doc["pressure_angle_allowed_deg"][k] + 1e-9]
+
+
 def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
     """The data, the base radius exact and measured, the largest pressure angles, ρ_min, the scales
     and the closing of s, in the lab's notation (markup: the sheet's notes typeset it)."""
@@ -396,7 +404,7 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
         """The phase's largest ϑ with the φ it falls at and, at an end, which (stop 56: the rocking
         arm's rise printed −27,04° with nothing saying it is the start, where the arm still rests)."""
         # «*» where the phase's largest exceeds its allowed angle (review 57: 25,14° over 25° unmarked)
-        over = "*" if abs(top[k]) > doc["pressure_angle_allowed_deg"][k] + 1e-9 else ""
+        over = "*" if k in angles_over(doc) else ""
         if where is None:
             return ang(top[k]) + "°" + over
         p = where[k]

@@ -79,7 +79,7 @@ def positions_table(doc: dict, lang: str, row_h: float = 6.0, size: float = 2.5,
 def notes(doc: dict, lang: str, cam: Cam) -> list[str]:
     """The data, the base radius exact and measured, the largest pressure angles, the curvature, the
     scales, the closing of s and the warnings, as the terminal says them (report.cam), typeset."""
-    from graphplan.report.cam import cam_lines
+    from graphplan.report.cam import angles_over, cam_lines
     lines = cam_lines(doc, lang)
     w = doc["warnings_uk"] if lang == "uk" else doc["warnings"]
     # a given R0 below the smallest: the R0 line says it with the radius to take (radius_small), not twice
@@ -89,10 +89,17 @@ def notes(doc: dict, lang: str, cam: Cam) -> list[str]:
     marked = any(c.endswith("*") for c in cols["ds"] + cols["dv"])
     if short_ordinates(doc):
         lines.append(short_note(doc, lang))
+    # «*» means two things on this sheet: an error past 5 % (Table 2) and a largest pressure angle past
+    # its allowed one (the notes' angles, ϑ(φ)'s peak letter, a given R0 below the smallest): the legend
+    # says each meaning that occurs (review 58 #5: only the 5 % was said, under «32,81°*»)
+    said = []
     if marked:
-        lines.append("* — " + ("похибка понад 5 %: коротка ордината (кілька мм) або мало поділок"
-                               if lang == "uk" else "an error past 5 %: a short ordinate (a few mm) or few "
-                               "divisions"))
+        said.append("похибка понад 5 % (табл. 2): коротка ордината (кілька мм) або мало поділок"
+                    if lang == "uk" else "an error past 5 % (Table 2): a short ordinate (a few mm) or few divisions")
+    if angles_over(doc):
+        said.append("кут тиску понад допустимий [ϑ]" if lang == "uk" else "a pressure angle past the allowed [ϑ]")
+    if said:
+        lines.append("* — " + "; ".join(said))
     return lines
 
 
