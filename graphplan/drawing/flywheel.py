@@ -841,6 +841,9 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
     graduate_axis(rec, graduation(hi, f.mu_T, bottom_mm=lo, step=graduation_step(
         graduation(dt_hi, f.mu_T, bottom_mm=dt_lo))), f.mu_T, lang, sides=(-1.0, 1.0), step="ΔT graduation")
     place_labels(rec, labels[:1], layer=LAYER)
+    # k and l before the points' numbers: a letter of the construction beside its own circle, the number
+    # of a curve point near it moves (review 58: point 12's number took l's place, l ran into |kl|'s text)
+    place_labels(rec, labels[-2:], layer=LAYER)
     curve = np.asarray([complex(x, y) for x, y in drawn(X, Y)])
     for j, z in zip(f.added, added):   # the added points' numbers (6′) asked as the divisions' are
         others = tuple(r for r in (*dots, *added) if abs(r - z) > 1e-6)
@@ -856,7 +859,7 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
         place_beside(rec, asked, layer=LAYER, avoid=curve, keep_whole=KEEP_WHOLE)
     if fence:                    # taken out again, pieces too (a number beside its point may break a thin line)
         rec.items[:] = [p for p in rec.items if p.step != "values' row"]
-    place_labels(rec, labels[1:], layer=LAYER)
+    place_labels(rec, labels[1:-2], layer=LAYER)
     return rec
 
 
