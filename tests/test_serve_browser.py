@@ -115,8 +115,12 @@ def shot(d, tmp_path: Path, name: str) -> Path:
 
 
 def wait(d, condition, timeout: float = 30.0, what: str = ""):
+    """Until ``condition()`` holds; an element the page redrew while it was read (the assemblies'
+    buttons re-rendered after a choice) is "not yet", read again on the next poll."""
+    from selenium.common.exceptions import StaleElementReferenceException
     from selenium.webdriver.support.ui import WebDriverWait
-    return WebDriverWait(d, timeout, poll_frequency=0.1).until(lambda _: condition(), message=what)
+    return WebDriverWait(d, timeout, poll_frequency=0.1,
+                         ignored_exceptions=(StaleElementReferenceException,)).until(lambda _: condition(), message=what)
 
 
 def preview_src(d) -> str:

@@ -383,7 +383,10 @@ def kern(prev: str, c: str, size: float) -> float:
     the degree sign reads as a stray mark. A small letter after Г, Т or T tucks under the bar,
     its ink beginning ``UNDER_BAR`` inside the bar's end (pairs osifont does not kern). Nothing otherwise (the font sets text by its
     advances). A sign (+ = ± ×) touching a letter stands ``sign_gap`` apart from it."""
-    if (prev in APOSTROPHES or c in APOSTROPHES) and prev.isalpha() != c.isalpha():
+    # an ASCII ' after a letter is tucked only over b, h, k's open right (the lab's, the crank's): after
+    # another letter it may be a prime (z'_2, whose index stands under it as z₂'s, review 48) — set as before
+    prime = c == "'" and prev not in OPEN_RIGHT
+    if (prev in APOSTROPHES or c in APOSTROPHES) and prev.isalpha() != c.isalpha() and not prime:
         return _apostrophe_kern(prev, c, size)
     if prev in SIGNS or c in SIGNS:
         return sign_gap(prev, c) * em(size)

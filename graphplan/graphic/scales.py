@@ -100,6 +100,7 @@ def legible_values(mu: float, finer: float) -> list[float]:
 
 
 LEGIBLE_READS = 0.25   # mm: a vector this much short of ``LEGIBLE_MM`` reads 40 on the 0.5-mm ruler
+PLAN_MM = 100.0        # … or its largest plan drawn at least this across (sheets.kinlayout; the explorer's step 0)
 
 
 def chosen_length(value: float, length_mm: float, reads_mm: float = 0.0) -> float:

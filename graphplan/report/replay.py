@@ -363,8 +363,7 @@ class Replay:
         plan (GOST 2.302's 1.5, 7.5·10^k between the series' steps), the trial rounded to that."""
         import math
 
-        from graphplan.graphic.scales import LEGIBLE_MM, at_least, on_round, on_series
-        from graphplan.sheets.kinlayout import PLAN_MM
+        from graphplan.graphic.scales import LEGIBLE_MM, PLAN_MM, at_least, on_round, on_series
         n, plan, cr = self.n, self.plan, self.n.mech.crank
         e = plan.entries.get(cr.pin)
         if e is None or not float(e.analytic) > 0:

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 
 from graphplan.drawing.layout import GAP, Grid, Leaf, Row, Shelf, Stack, column_size, extent, flow, split
 from graphplan.graphic.record import Record
-from graphplan.graphic.scales import LEGIBLE_MM, LEGIBLE_READS   # the plans read: p_v a and π a at least this long
+from graphplan.graphic.scales import LEGIBLE_MM, LEGIBLE_READS, PLAN_MM   # the plans read: p_v a and π a at least this long,
 from graphplan.sheets.compose import FACTORS, Family, choose_levels, coarser, field_of, finer, notes_height
 from graphplan.sheets.form import TABLES, Form
 from graphplan.util.errors import GraphplanError, said_error
@@ -21,7 +21,7 @@ if TYPE_CHECKING:
     from graphplan.sheets.kinematics import Drafter
 
 FAMILIES = ("position", "velocity", "acceleration")
-PLAN_MM = 100.0        # … or its largest plan drawn at least this across
+# PLAN_MM (graphic.scales): … or its largest plan drawn at least this across
 CRANK_MM = 30.0        # a set's position plan: the crank drawn at least this long (else its twelve
                        # positions crowd the letters off their points: 1:4 drew OA 20 mm, S1 23 mm away)
 ONE_SHEET = ("A1",)    # the coursework's format: one sheet, the plans smaller if they must be
