@@ -69,6 +69,20 @@ def _worst(R0: float) -> float:
     return max(np.max(np.abs(th[ON_RISE])) / 40.0, np.max(np.abs(th[ON_RETURN])) / 45.0)
 
 
+
+def _least(worst, top: float) -> float:
+    """The least base radius (m) whose worst pressure angle is within its allowed one (``worst`` ≤ 1):
+    a 0.5-mm scan from 20.5 mm up to ``top`` (allowed from the first one on, none below), then bisection."""
+    scan = np.arange(0.0205, top, 0.0005)
+    ok = np.array([worst(r) <= 1.0 for r in scan])
+    first = int(np.argmax(ok))
+    assert first > 0 and ok[first:].all()
+    lo, hi = scan[first - 1], scan[first]
+    for _ in range(30):
+        mid = (lo + hi) / 2
+        lo, hi = (lo, mid) if worst(mid) <= 1.0 else (mid, hi)
+    return hi
+
 def test_cam58_base_radius_angles_and_curvature_by_brute_force(cam58):
     """R0 min: the first radius of a 0.5-mm scan of the arm's reach that allows [ϑ], bisected, to 0.01 mm
     (and every scanned radius above it allowed: no band); at R0 = 33 mm ψ0, each division's exact ϑ to
@@ -76,15 +90,7 @@ def test_cam58_base_radius_angles_and_curvature_by_brute_force(cam58):
     the smallest radius of curvature of the convex centre profile — the near dwell's arc, R0 — and no
     concave part tighter than the roller."""
     cam, sol, g, doc = cam58
-    scan = np.arange(0.0205, 0.08, 0.0005)
-    ok = np.array([_worst(r) <= 1.0 for r in scan])
-    first = int(np.argmax(ok))
-    assert first > 0 and ok[first:].all()
-    lo, hi = scan[first - 1], scan[first]
-    for _ in range(30):
-        mid = (lo + hi) / 2
-        lo, hi = (lo, mid) if _worst(mid) <= 1.0 else (mid, hi)
-    assert doc["base_radius_min_m"] == pytest.approx(hi, abs=1e-5)
+    assert doc["base_radius_min_m"] == pytest.approx(_least(_worst, 0.08), abs=1e-5)
     assert doc["base_radius_m"] == pytest.approx(0.033) and doc["arm_angle_deg"] == pytest.approx(
         math.degrees(math.acos((A * A + L * L - 0.033 ** 2) / (2 * A * L))), abs=1e-9)
     th, C = _theta(0.033)
@@ -309,15 +315,7 @@ def test_own58_clockwise_rocking_cam_by_brute_force(own58):
         def worst(R):
             th = theta(R, sigma)
             return max(np.max(np.abs(th[rise])) / 40.0, np.max(np.abs(th[ret])) / 45.0)
-        scan = np.arange(0.0205, 0.09, 0.0005)
-        ok = np.array([worst(r) <= 1.0 for r in scan])
-        i = int(np.argmax(ok))
-        assert i > 0 and ok[i:].all()
-        lo, hi = scan[i - 1], scan[i]
-        for _ in range(30):
-            mid = (lo + hi) / 2
-            lo, hi = (lo, mid) if worst(mid) <= 1.0 else (mid, hi)
-        return hi
+        return _least(worst, 0.09)
     assert doc["sense"] == "cw"
     assert doc["base_radius_min_m"] == pytest.approx(r0_min(-1), abs=1e-5)
     assert abs(doc["base_radius_min_m"] - r0_min(+1)) > 1e-3
