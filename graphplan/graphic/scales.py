@@ -159,6 +159,18 @@ def larger_choices(value: float, mu: float, longest_mm: float, step_mm: float = 
                   key=lambda c: (-c[0], not c[1]))
 
 
+def series_choices(value: float, mu: float, longest_mm: float) -> list[float]:
+    """The standard series' coefficients (1, 2, 2.5, 4, 5 × 10^k) that draw ``value`` larger than
+    ``mu`` does, up to ``longest_mm``, the smallest drawing first: a set's plans grown into the room
+    its sheets give (sheets.kinlayout's ``set_of_sheets``) at the series' scales, as docs and LAYOUT require ("the
+    largest standard value whose drawings fit") — not GOST 2.302's 1.5, 7.5 × 10^k nor the lab's
+    own π a chosen in 5-mm steps (review 58 #2: 0.0272 (m/s²)/mm, π a 145 mm)."""
+    if not (value > 0 and mu > 0 and math.isfinite(value / mu)):
+        return []
+    return sorted((m for m in series_around(mu) if m < mu * (1 - 1e-9) and value / m <= longest_mm + 1e-9),
+                  reverse=True)
+
+
 def on_round(mu: float) -> bool:
     """Whether μ is a round value: the series' or GOST 2.302's 1.5, 7.5 × 10^k."""
     k = math.floor(math.log10(mu))

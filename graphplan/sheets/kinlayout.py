@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 
 from graphplan.drawing.layout import GAP, Grid, Leaf, Row, Shelf, Stack, column_size, extent, flow, split
 from graphplan.graphic.record import Record
-from graphplan.graphic.scales import LEGIBLE_MM, LEGIBLE_READS, PLAN_MM   # the plans read: p_v a and π a at least this long,
+from graphplan.graphic.scales import LEGIBLE_MM, LEGIBLE_READS, PLAN_MM, series_choices   # the plans read: p_v a and π a at least this long,
 from graphplan.sheets.compose import FACTORS, Family, choose_levels, coarser, field_of, finer, notes_height
 from graphplan.sheets.form import TABLES, Form
 from graphplan.util.errors import GraphplanError, said_error
@@ -1042,19 +1042,6 @@ def grid_rows(cells_: list[Leaf], k: int) -> list[list[Leaf]]:
         c = rows[-1][0]
         rows[-1] = rows[-1] + [Leaf("", c.w, c.h) for _ in range(k - len(rows[-1]))]
     return rows
-
-
-def series_choices(value: float, mu: float, longest_mm: float) -> list[float]:
-    """The standard series' coefficients (1, 2, 2.5, 4, 5 × 10^k) that draw ``value`` larger than
-    ``mu`` does, up to ``longest_mm``, the smallest drawing first: a set's plans grown into the room
-    its sheets give (``set_of_sheets``) at the series' scales, as docs and LAYOUT require ("the
-    largest standard value whose drawings fit") — not GOST 2.302's 1.5, 7.5 × 10^k nor the lab's
-    own π a chosen in 5-mm steps (review 58 #2: 0.0272 (m/s²)/mm, π a 145 mm)."""
-    from graphplan.graphic.scales import series_around
-    if not (value > 0 and mu > 0 and math.isfinite(value / mu)):
-        return []
-    return sorted((m for m in series_around(mu) if m < mu * (1 - 1e-9) and value / m <= longest_mm + 1e-9),
-                  reverse=True)
 
 
 def just_legible(fam: Family) -> float:
