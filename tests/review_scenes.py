@@ -8169,3 +8169,145 @@ rpm = 120
 direction = "cw"
 divisions = 8
 '''
+
+
+LINK59 = '''
+# Stop 59 (the lead's check): a crank-rocker four-bar whose rocker O2B carries a slot (the lever O2E);
+# a block C in the slot is pinned to a ram sliding on a horizontal guide above the rocker's pivot:
+# I(0-1) -> II(2-3) ВВВ -> II(4-5) ПВП (PRP); the crank turns clockwise; a 1500 N resistance on the
+# ram's working stroke; masses by length; dynamics to a 1000-rpm motor, δ = 1/30.
+title = "Важільний привод повзуна через кулісу коромисла"
+title_en = "A ram driven by a slotted rocker of a four-bar"
+designation = "ТММ.КП.59.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-59"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.24, 0]
+
+[frame.guides]
+x = { through = [0, 0.22], angle_deg = 0, title_uk = "повзуна", title_en = "of the ram" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.07
+rpm = 95
+direction = "cw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.26
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.18
+points = { S3 = 0.5, E = 1.75 }
+
+[[link]]
+name = "C"
+number = 4
+joints = ["C"]
+slides_on = "O2B"
+mass = 1.5
+
+[[link]]
+name = "5"
+number = 5
+joints = ["C"]
+slides_on = "x"
+mass = 18
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [4]
+force_phi_deg = 120
+output = "C"
+
+[loads]
+g = 9.81
+mass_per_length = 25
+inertia_factor = 0.1
+
+[[force]]
+point = "C"
+magnitude = 1500
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.033
+efficiency = 0.82
+synchronous_rpm = 1000
+'''
+
+
+CAM59 = '''
+# Stop 59 (the lead's check): a translating roller follower, the cam clockwise, a NEGATIVE offset (to the
+# side that raises the rise's pressure angle), a cosine rise of 100°, a far dwell of 40°, a parabolic
+# return of 110°, a near dwell of 110°; stroke 35 mm, roller 12 mm, [ϑ] 28°/35°, 8 divisions.
+title = "Кулачковий механізм зі зміщеним роликовим штовхачем (перевірка 59)"
+title_en = "Cam with an offset translating roller follower (check 59)"
+designation = "ТММ.КМ.59.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-59"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.035
+offset = -0.006
+roller_radius = 0.012
+phases_deg = { rise = 100, dwell_far = 40, return = 110, dwell_near = 110 }
+laws = { rise = "cosine", return = "parabolic" }
+pressure_angle_deg = { rise = 28, return = 35 }
+rpm = 240
+direction = "cw"
+divisions = 8
+'''
+
+
+GEARS59 = '''
+# Stop 59 (the lead's check): a pair 15/32 with given shifts x1 = 0.35, x2 = -0.2 (a negative shift on the
+# wheel), m = 5 mm, and a type-A train with given teeth 18/27/72, K = 3, 960 rpm.
+title = "Зубчаста передача 15/32 і планетарний редуктор 18/27/72 (перевірка 59)"
+title_en = "A gear pair 15/32 and a planetary reducer 18/27/72 (check 59)"
+designation = "ТММ.ЗП.59.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-59"
+organisation = "НУБіП України"
+
+[gears]
+z = [15, 32]
+module = 0.005
+shifts = [0.35, -0.2]
+
+[planetary]
+type = "A"
+z = [18, 27, 72]
+planets = 3
+module = 0.004
+rpm = 960
+'''
