@@ -189,6 +189,34 @@ def _along_links(z: complex, u: complex, links: list[tuple[complex, complex]]) -
     return ahead, behind
 
 
+SLIDE_MM = 30.0    # how far an arrow hidden by its link's line at its point may slide along its own line
+
+
+def _on_line(z: complex, u: complex, length: float, links: list[tuple[complex, complex]],
+             drawn: list[tuple[complex, complex, complex]], outlines: list[tuple[complex, complex]] = (),
+             points: list[complex] = ()) -> tuple[complex, complex] | None:
+    """The nearest place ON the force's line of action through ``z`` (leaving the point along ``u``
+    or arriving at it, slid up to ``SLIDE_MM`` along the line by 1 mm steps) where its arrow runs
+    along no drawn line (``_run_along`` ≤ 1 mm), crosses no link, no block's outline and no arrow
+    drawn and lies on none of them, and neither it nor its stroke from ``z`` passes within 1.5 mm of
+    another loaded point (``points``: G5 slid up from S5 ran over the block's C) — or None where
+    the link hides every such place."""
+    arrows = [(t, h) for _, t, h in drawn]
+    for k in range(int(SLIDE_MM) + 1):
+        s = float(k)
+        for a, b in ((z + s * u, z + (s + length) * u), (z - (s + length) * u, z - s * u)):
+            if _run_along(a, b, links) > 1.0 or _crosses(a, b, links) or _crosses(a, b, arrows) \
+                    or _crosses(a, b, list(outlines)):
+                continue
+            far = a if abs(a - z) > abs(b - z) else b
+            if any(abs(w - z) > 0.5 and _to_segment(w, z, far) < 1.5 for w in points):
+                continue
+            if any(_one_arrow(a, b, t, h, LANE_MM / 2) or _one_shaft(a, b, t, h) for t, h in arrows):
+                continue
+            return a, b
+    return None
+
+
 def _run_along(a: complex, b: complex, links: list[tuple[complex, complex]], tol: float = 0.6) -> float:
     """How much (mm) of the arrow a→b lies on a drawn line — within ``tol`` mm of a segment of
     ``links`` that runs within ``ALONG_DEG`` of it (Φ5 at the slider's joint along the rod CD, P_D
@@ -666,6 +694,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     guide_lines = [(z - GUIDE_MM * _unit(g), z + GUIDE_MM * _unit(g)) for z, g in guides]   # drawn below
     lanes: dict[str, complex] = {}     # a force set aside from its line of action: by how much (mm)
     set_aside: list[tuple[complex, complex, complex, complex]] = []   # … (its point, that, its direction, middle)
+    slid: set[str] = set()             # a force slid along its own line past its link (``_on_line``)
 
     def lay(name: str, z: complex, u: complex, length: float) -> tuple[complex, complex]:
         """Where a force's arrow goes: clear of the links (``_clear_of_links``); one lying inside a
@@ -693,9 +722,21 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         inside = (ahead > 0.5 and behind > 0.5) or _run_along(a, b, drawn_links + guide_lines) > 1.0
         over = any(abs(w - z) < 0.5 and _one_arrow(a, b, t, h) for w, t, h in drawn)
         if inside and name in armed:
-            # an arm is drawn to its line: the arrow beside the link in a lane, its own length
-            # (G2, G3 on the coulisse's rocker ran 70 mm down it to O), the arm ending on its line
-            # of action drawn thin through the point (``lanes``)
+            # an arm is drawn to its line: first the arrow ON its line, slid along it past where
+            # the link hides it — leaving the point, or arriving at it (the seeds' pushing arrow),
+            # a thin stroke from the point to it (review 58 #1: G4 at C and G5 at S5 on the
+            # slotted lever 2° off vertical were set 2.5 and 4.8 mm aside, off the lines their arms
+            # end on); only where every place on the line is hidden, beside the link in a lane,
+            # its own length (G2, G3 on the coulisse's rocker ran 70 mm down it to O), the arm
+            # ending on its line of action drawn thin through the point (``lanes``)
+            on_line = _on_line(z, u, length, drawn_links + guide_lines, drawn, blocks, [w for w, _ in busy])
+            if on_line is not None:
+                a, b = on_line
+                slid.add(name)
+                if _heads_meet(z, b, drawn):
+                    a, b = _head_clear(z, u, a, b, drawn, drawn_links, busy)
+                drawn.append((z, a, b))
+                return a, b
             a, b = z, z + length * u
         if inside or (over and name not in armed):
             others = [v for w, v in busy if abs(w - z) < 0.5 and abs((v.conjugate() * u).imag) > 1e-6]
@@ -827,6 +868,10 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         u = _unit(f.force)
         a, b = span[f.name] = lay(f.name, z, u, _arrow_length(abs(f.force), biggest))
         rec.vector(_pt(a), _pt(b), role="absolute", layer="vectors", step=step, text=f.name)
+        near_end = a if abs(a - z) < abs(b - z) else b
+        if f.name in slid and abs(near_end - z) > 0.5:
+            # slid along its line (``_on_line``): a thin stroke from the point to the arrow
+            rec.segment(_pt(z), _pt(near_end), role="projection", layer="construction", step=step)
         if f.name in lanes and f.name not in armed:
             # set a lane aside from its point (Φ1 inside the crank): a thin stroke across from the
             # point to its arrow's end there, so that it reads as applied at the point and not as a
@@ -834,7 +879,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             end = next((e for e in (a, b) if abs(dot(e - z, u)) < 0.5), None)
             if end is not None:
                 rec.segment(_pt(z), _pt(end), role="projection", layer="construction", step=step)
-        labels.append((a, f.name, -u) if abs(dot(b - z, u)) < 0.5 else (b, f.name, u))   # an arrow ending at its point: named at its tail
+        labels.append((a, f.name, -u) if dot(b - z, u) < 0.5 else (b, f.name, u))   # an arrow ending at its point: named at its tail
         if all(abs(w - z) > 0.5 for w, _ in names) and all(abs(w - z) > 0.5 for w, _ in centres):
             lk = mech.links[f.link]            # a load at the link's centre of mass: S_i marked
             centres.append((z, _point_name(fp, f.link, z, mu)))
