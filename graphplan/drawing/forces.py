@@ -198,8 +198,9 @@ def _on_line(z: complex, u: complex, length: float, links: list[tuple[complex, c
     """The nearest place ON the force's line of action through ``z`` (leaving the point along ``u``
     or arriving at it, slid up to ``SLIDE_MM`` along the line by 1 mm steps) where its arrow runs
     along no drawn line (``_run_along`` ≤ 1 mm), crosses no link, no block's outline and no arrow
-    drawn and lies on none of them, and neither it nor its stroke from ``z`` passes within 1.5 mm of
-    another loaded point (``points``: G5 slid up from S5 ran over the block's C) — or None where
+    drawn and runs by none of them (``LANE_MM``), and neither it nor its stroke from ``z`` passes
+    within ``LANE_MM`` of another loaded point (``points``: G5 slid up from S5 ran over the block's C;
+    G4 down from C ran 1.6 mm by S5, its name nearer G5) — or None where
     the link hides every such place."""
     arrows = [(t, h) for _, t, h in drawn]
     for k in range(int(SLIDE_MM) + 1):
@@ -209,9 +210,9 @@ def _on_line(z: complex, u: complex, length: float, links: list[tuple[complex, c
                     or _crosses(a, b, list(outlines)):
                 continue
             far = a if abs(a - z) > abs(b - z) else b
-            if any(abs(w - z) > 0.5 and _to_segment(w, z, far) < 1.5 for w in points):
+            if any(abs(w - z) > 0.5 and _to_segment(w, z, far) < LANE_MM for w in points):
                 continue
-            if any(_one_arrow(a, b, t, h, LANE_MM / 2) or _one_shaft(a, b, t, h) for t, h in arrows):
+            if any(_one_arrow(a, b, t, h, LANE_MM) or _one_shaft(a, b, t, h) for t, h in arrows):
                 continue
             return a, b
     return None
