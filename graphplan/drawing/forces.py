@@ -189,29 +189,66 @@ def _along_links(z: complex, u: complex, links: list[tuple[complex, complex]]) -
     return ahead, behind
 
 
-SLIDE_MM = 30.0    # how far an arrow hidden by its link's line at its point may slide along its own line
+SLIDE_MM = 12.0    # how far an arrow hidden by its link's line at its point may slide along its own line:
+                   # farther, its stroke from the point hides in the link and the arrow reads as applied
+                   # elsewhere (the slotter's G4, 3° off its link, slid 25 mm from S4 toward C)
+CLEAR_MM = 1.2     # … and keep this far (centre to centre) from every drawn link along its whole length:
+                   # two 0.7 mm lines with half a millimetre of paper between them
+HEAD_HALF_MM = 1.0  # a thick arrow's head: 4 mm long, 2 mm wide (graphic.record.vector_arrow)
+HEAD_LONG_MM = 4.0
+SHAFT_HALF_MM = 0.35
+
+
+def _clearance(a: complex, b: complex, segments: list[tuple[complex, complex]], n: int = 40) -> float:
+    """How far the arrow a→b's ink stays from the drawn lines ``segments`` (centre lines, mm), less
+    the clearance asked (``CLEAR_MM``): sampled at ``n + 1`` points along its whole length, its head
+    (wider than its shaft toward its base) asking as much more as it is wider — ≥ 0 where the arrow
+    reads apart from every line, < 0 where it runs on or by one (the slotter's G4 slid down its link
+    3° off its line ran 0.6–1 mm from the link's stroke: a thickened link, not a force)."""
+    import numpy as np
+    d = b - a
+    if abs(d) < 1e-9 or not segments:
+        return math.inf
+    t = np.linspace(0.0, 1.0, n + 1)
+    z = a + d * t                                              # samples along the arrow
+    back = (1.0 - t) * abs(d)                                  # how far each is back from the tip
+    wider = np.clip(np.minimum(back, HEAD_LONG_MM) / HEAD_LONG_MM * HEAD_HALF_MM - SHAFT_HALF_MM, 0.0, None)
+    wider[back > HEAD_LONG_MM] = 0.0
+    s = np.array([p for p, _ in segments], dtype=complex)[:, None]
+    e = np.array([q for _, q in segments], dtype=complex)[:, None]
+    w = e - s
+    ww = np.where(np.abs(w) < 1e-12, 1.0, np.abs(w) ** 2)
+    k = np.clip(((z[None, :] - s) * np.conj(w)).real / ww, 0.0, 1.0)
+    dist = np.abs(z[None, :] - (s + k * w)).min(axis=0)
+    return float((dist - CLEAR_MM - wider).min())
 
 
 def _on_line(z: complex, u: complex, length: float, links: list[tuple[complex, complex]],
              drawn: list[tuple[complex, complex, complex]], outlines: list[tuple[complex, complex]] = (),
              points: list[complex] = ()) -> tuple[complex, complex] | None:
     """The nearest place ON the force's line of action through ``z`` (leaving the point along ``u``
-    or arriving at it, slid up to ``SLIDE_MM`` along the line by 1 mm steps) where its arrow runs
-    along no drawn line (``_run_along`` ≤ 1 mm), crosses no link, no block's outline and no arrow
-    drawn and runs by none of them (``LANE_MM``), and neither it nor its stroke from ``z`` passes
-    within ``LANE_MM`` of another loaded point (``points``: G5 slid up from S5 ran over the block's C;
-    G4 down from C ran 1.6 mm by S5, its name nearer G5) — or None where
-    the link hides every such place."""
+    or arriving at it, slid up to ``SLIDE_MM`` along the line by 1 mm steps) where its arrow crosses
+    no link, no block's outline and no arrow drawn, keeps ``CLEAR_MM`` from every one of those lines
+    over its whole length (``_clearance``: the slotter's G4 slid down its link 3° off its line ran
+    0.6–1 mm from it, a thickened link), runs by no arrow (``LANE_MM``), and neither it nor its stroke
+    from ``z`` passes within ``LANE_MM`` of another point (``points``, loaded or jointed: G5 slid up
+    from S5 ran over the block's C; G4 down from C ran 1.6 mm by S5, its name nearer G5), its head
+    ends ``HEAD_CLEAR_MM`` from them and it lies nearer its own point than any other (COULISSE8's G1
+    slid up from S1 began by the crank's A) — or None where the link hides every such place."""
     arrows = [(t, h) for _, t, h in drawn]
     for k in range(int(SLIDE_MM) + 1):
         s = float(k)
         for a, b in ((z + s * u, z + (s + length) * u), (z - (s + length) * u, z - s * u)):
-            if _run_along(a, b, links) > 1.0 or _crosses(a, b, links) or _crosses(a, b, arrows) \
-                    or _crosses(a, b, list(outlines)):
+            if _crosses(a, b, links) or _crosses(a, b, arrows) or _crosses(a, b, list(outlines)) \
+                    or _clearance(a, b, list(links) + list(outlines)) < 0.0:
                 continue
             far = a if abs(a - z) > abs(b - z) else b
             if any(abs(w - z) > 0.5 and _to_segment(w, z, far) < LANE_MM for w in points):
                 continue
+            if abs(b - z) > abs(a - z) and any(abs(w - z) > 0.5 and abs(w - b) < HEAD_CLEAR_MM for w in points):
+                continue        # its head by another point reads as applied there (COULISSE8's G1 down to O1)
+            if any(abs(w - z) > 0.5 and _to_segment(w, a, b) < s for w in points):
+                continue        # nearer another point than its own: read as that one's (G1 by the crank's A)
             if any(_one_arrow(a, b, t, h, LANE_MM) or _one_shaft(a, b, t, h) for t, h in arrows):
                 continue
             return a, b
@@ -723,14 +760,17 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         inside = (ahead > 0.5 and behind > 0.5) or _run_along(a, b, drawn_links + guide_lines) > 1.0
         over = any(abs(w - z) < 0.5 and _one_arrow(a, b, t, h) for w, t, h in drawn)
         if inside and name in armed:
-            # an arm is drawn to its line: first the arrow ON its line, slid along it past where
-            # the link hides it — leaving the point, or arriving at it (the seeds' pushing arrow),
-            # a thin stroke from the point to it (review 58 #1: G4 at C and G5 at S5 on the
-            # slotted lever 2° off vertical were set 2.5 and 4.8 mm aside, off the lines their arms
-            # end on); only where every place on the line is hidden, beside the link in a lane,
-            # its own length (G2, G3 on the coulisse's rocker ran 70 mm down it to O), the arm
-            # ending on its line of action drawn thin through the point (``lanes``)
-            on_line = _on_line(z, u, length, drawn_links + guide_lines, drawn, blocks, [w for w, _ in busy])
+            # an arm is drawn to its line: first the arrow ON its line (the line the arm ends on,
+            # drawn thin through the point), slid along it past where the link hides it — leaving
+            # the point, or arriving at it (the seeds' pushing arrow), a thin stroke from the point
+            # to it — wherever it keeps ``CLEAR_MM`` from every drawn line over its whole length
+            # (review 58 #1: G4 at C and G5 at S5 on the slotted lever 7° off vertical were set
+            # 2.5 and 4.8 mm aside, off the lines their arms end on). Not where no arm is drawn
+            # (the scheme): there no line of action leads the eye to a slid arrow — LINK59's G3
+            # hung 9 mm below S3 on a stroke the rocker hid, read as a load lower down — the lane
+            # with its stroke across to the point reads better
+            on_line = _on_line(z, u, length, drawn_links + guide_lines, drawn, blocks,
+                               [w for w, _ in busy] + [w for w, _ in names])
             if on_line is not None:
                 a, b = on_line
                 slid.add(name)
@@ -738,6 +778,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                     a, b = _head_clear(z, u, a, b, drawn, drawn_links, busy)
                 drawn.append((z, a, b))
                 return a, b
+            # only where every place on the line is hidden, beside the link in a lane, its own
+            # length (G2, G3 on the coulisse's rocker ran 70 mm down it to O), the arm ending on
+            # its line of action drawn thin through the point (``lanes``)
             a, b = z, z + length * u
         if inside or (over and name not in armed):
             others = [v for w, v in busy if abs(w - z) < 0.5 and abs((v.conjugate() * u).imag) > 1e-6]

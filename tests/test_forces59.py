@@ -1,0 +1,93 @@
+"""Stop 59 (review 58 #1, frc58c's rule tightened): a force with an arm drawn to its line, hidden by its
+link's line at its point, is drawn ON its line of action — the line its arm ends on — slid along it
+past the link, where its arrow keeps 1.2 mm (centre to centre: two 0.7 mm lines and half a millimetre
+of paper) from every drawn link over its whole length; else beside the link in a lane.
+
+Checked against the drawing's own geometry: each arrow's line, extended, through the force's point;
+every arrow drawn off its point (slid or set aside) sampled along its whole length against every link
+segment of the record. On main the coulisses' weights stood in lanes 2.5 mm off the lines their arms
+end on; frc58c's slide (≤ 1 mm of the link's line allowed) laid the slotter's G4 0.6–1 mm from its
+link 3° off vertical — a thickened link, not a force."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from conftest import scene_force_plans
+from graphplan.drawing.forces import _mu, group_record
+from review_scenes import COULISSE, COULISSE_REVIEW58, LINK59, SLIDER_COULISSE50
+
+pytestmark = pytest.mark.slow
+
+SLOTTER = (Path(__file__).parents[1] / "examples" / "slotter.toml").read_text(encoding="utf-8")
+
+CLEAR_MM = 1.2
+
+
+def _to_line(p: complex, a: complex, b: complex) -> float:
+    u = (b - a) / abs(b - a)
+    return abs(((p - a) * u.conjugate()).imag)
+
+
+def _to_segment(p: complex, a: complex, b: complex) -> float:
+    d = b - a
+    if abs(d) < 1e-9:
+        return abs(p - a)
+    t = max(0.0, min(1.0, ((p - a) * d.conjugate()).real / abs(d) ** 2))
+    return abs(p - (a + t * d))
+
+
+def _drawing(scene: str, label: str):
+    fp = scene_force_plans(scene)
+    gp = next(g for g in fp.groups if g.label == label)
+    rec = group_record(fp, gp)
+    mu = _mu(fp, gp)
+    at = {f.name: f.at / mu for f in gp.forces if f.force != 0}
+    armed = {t.name for eq in gp.equations for t in eq.terms if abs(t.arm_mm) >= 1.0 and not t.couple}
+    arrows = {q.text: (complex(*q.points[0]), complex(*q.points[1])) for q in rec.items
+              if q.kind == "vector" and q.role == "absolute" and q.text in at}
+    links = []
+    for q in rec.items:
+        if q.role == "link" and q.kind in ("polyline", "segment"):
+            pts = [complex(*p) for p in q.points]
+            links += list(zip(pts, pts[1:]))
+    return at, armed, arrows, links
+
+
+CASES = [  # (scene, group, the forces that must lie on their own lines there)
+    (COULISSE_REVIEW58, "II(4-5)", ("G4", "G5")),     # the slotted lever 7° off vertical (review 58 #1)
+    (COULISSE, "II(2-3)", ("G2", "G3")),              # the stone's G2 and the rocker's G3 at S3
+    (SLIDER_COULISSE50, "II(4-5)", ("G4", "G5")),
+    (LINK59, "II(2-3)", ("G3",)),                     # the slotted rocker O2E at S3
+    (SLOTTER, "II(4-5)", ()),                         # G4, 3° off its link: a lane, not its stroke
+]
+
+
+@pytest.mark.parametrize("scene,label,on_line", CASES,
+                         ids=["coulisse58", "coulisse", "slider_coulisse50", "link59", "slotter"])
+def test_an_armed_force_lies_on_its_line_or_clear_of_every_link(scene, label, on_line):
+    at, armed, arrows, links = _drawing(scene, label)
+    assert links and armed
+    for name in on_line:
+        a, b = arrows[name]
+        assert _to_line(at[name], a, b) < 0.05, (label, name)            # on the line its arm ends on
+    detached = 0
+    for name, (a, b) in arrows.items():
+        z = at[name]
+        if min(abs(a - z), abs(b - z)) < 0.5 and _to_line(z, a, b) < 0.05:
+            continue                     # drawn from its point (or to it): the point's links meet it there
+        detached += 1
+        least = min(_to_segment(a + (b - a) * k / 40, s, e) for k in range(41) for s, e in links)
+        assert least >= CLEAR_MM - 1e-6, (label, name, round(least, 2))
+    assert detached >= 1
+
+
+def test_the_slotters_g4_keeps_its_lane_and_its_name():
+    """Its link 3° off its line, a place on the line clear by 1.2 mm lay 23 mm and more down from S4:
+    the arrow stays beside the link (2.5 mm), its line of action through S4, parallel."""
+    at, armed, arrows, links = _drawing(SLOTTER, "II(4-5)")
+    a, b = arrows["G4"]
+    assert "G4" in armed
+    assert 2.0 < _to_line(at["G4"], a, b) < 3.0
+    assert abs(((b - a) / abs(b - a)).imag + 1.0) < 1e-6                 # down, parallel to its line
