@@ -54,8 +54,8 @@ def test_where_no_corner_of_the_plan_is_free_the_detail_goes_under_it_with_its_m
 
 def test_a_detail_reads_the_drawn_side_to_its_own_ruler_and_a_zero_reaction_takes_none():
     # INCLINED_ROCKER53's R45 (3.76 N exact) is 0.4 mm at 20 N/mm: read off the detail, its value is the
-    # drawn side to the detail's half-division — the knowns rounded to 0.5 mm on the plan (±5 N each)
-    # put the side itself off, which the reaction's "why" says
+    # side drawn there to the detail's half-division — the polygon laid again at μF_I, its knowns rounded
+    # there (stop 59: the plan's side enlarged carried the plan's ±5 N a known and read 7 N, +86 %)
     fp = scene_force_plans(INCLINED_ROCKER53)
     read = [m for g in fp.groups for m in g.reactions.values() if m.detail_mu]
     assert read
@@ -63,7 +63,8 @@ def test_a_detail_reads_the_drawn_side_to_its_own_ruler_and_a_zero_reaction_take
         gp = next(g for g in fp.groups if m.key in g.reactions)
         side = next(s for s in gp.sides if s.name == m.name)
         assert measure(side.mm, fp.precision) < 1.0
-        assert abs(m.value - side.mm * gp.mu_F) <= m.detail_mu * fp.precision / 2 + 1e-9
+        fine = next(s for s in gp.detail_sides if s.name == m.name)
+        assert abs(m.value - fine.mm * m.detail_mu) <= m.detail_mu * fp.precision / 2 + 1e-9
     # a reaction exactly 0 (the yoke's guide, no sideways load) is 0, with no detail at a 1e-14 N/mm
     yoke = scene_force_plans(YOKE_ROCKER51)
     assert all(m.detail_mu == 0 for g in yoke.groups for m in g.reactions.values() if m.analytic < 1e-6)

@@ -10,6 +10,7 @@ end on; frc58c's slide (≤ 1 mm of the link's line allowed) laid the slotter's 
 link 3° off vertical — a thickened link, not a force."""
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import pytest
@@ -91,3 +92,29 @@ def test_the_slotters_g4_keeps_its_lane_and_its_name():
     assert "G4" in armed
     assert 2.0 < _to_line(at["G4"], a, b) < 3.0
     assert abs(((b - a) / abs(b - a)).imag + 1.0) < 1e-6                 # down, parallel to its line
+
+
+def test_a_reaction_read_off_the_detail_is_read_where_the_detail_lays_the_polygon_again():
+    """FRC56_PUMP's II(4-5): R05 = 1.18 N (exact) is 0.12 mm at the plan's 10 N/mm, under the knowns'
+    rounding there (0.25 mm each, 2.5 N): the plan's side enlarged read 3.75 N (+217 %). Laid again at
+    the detail's μF_I, each known rounded there, it reads within the rounding of the sides laid at μF_I
+    (half the ruler's step per side, the reading's own half step) of the exact value; the detail drawn
+    at that μF_I shows the side the table reads, and says its scale."""
+    from graphplan.drawing.forces import polygon_record
+    from review_scenes import FRC56_PUMP
+    fp = scene_force_plans(FRC56_PUMP)
+    gp = next(g for g in fp.groups if g.label == "II(4-5)")
+    m = gp.reactions["R05"]
+    assert m.detail_mu > 0 and m.detail_mu <= gp.mu_F / 2
+    knowns = [f for f in gp.forces if f.force != 0] + [s for s in gp.sides if s.role == "component"]
+    bound = (len(knowns) + 1) * fp.precision / 2 * m.detail_mu
+    assert abs(m.value - m.analytic) <= bound, (m.value, m.analytic, bound)
+    assert abs(m.analytic - 1.1814) < 1e-3                      # the closed form's R05 (N)
+    assert abs(m.value - m.mm * m.detail_mu) < 1e-9             # read off the detail's side, at its μF_I
+    rec = polygon_record(fp, gp)
+    assert rec.scales.get("mu_F detail") == m.detail_mu
+    side = [q for q in rec.items if q.kind == "vector" and q.role == "result" and q.text == "R05"
+            and q.step.endswith(": detail")]
+    assert side, "R05 drawn in the detail"
+    (x0, y0), (x1, y1) = side[0].points[:2]
+    assert abs(math.hypot(x1 - x0, y1 - y0) - m.mm) <= fp.precision / 2 + 1e-9

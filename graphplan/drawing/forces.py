@@ -1408,6 +1408,10 @@ def _polygon(fp: ForcePlans, gp: GroupPlan, lang: str, detail: bool, beside: boo
     tiny = [s for s in sides if s.mm < TINY_MM]
     same = _coinciding(sides)
     detail = _detail_ring(rec, sides, mu_F, step, _read_in_detail(gp)) if detail else None
+    read = next(iter(_read_in_detail(gp)), "")
+    if detail is not None and read and gp.detail_sides and any(q.name == read for q in gp.detail_sides):
+        from dataclasses import replace
+        detail = replace(detail, fine=tuple(q for q in gp.detail_sides if q.mm > 1e-9), read=read)
     # a side wholly within the ring is named in the detail (the crank's G1 and Φ1 by R21's tail)
     lettered = [s for s in sides if s.mm >= TINY_MM and s.name not in same
                 and (detail is None or not _within(s, detail.box))]
@@ -1492,6 +1496,9 @@ class PlanDetail:
     finest first (``plan_detail``)."""
     box: tuple[float, float, float, float]
     choices: tuple[float, ...]
+    fine: tuple = ()          # a reaction read off the detail: the polygon laid again at μF_I (its sides, mm
+    read: str = ""            # there: ``GroupPlan.detail_sides``) and that reaction's name, drawn instead
+                              # of the plan's sides enlarged
 
 
 def plan_detail(sides: list, mu_F: float, read: dict[str, float] | None = None) -> PlanDetail | None:
@@ -1644,6 +1651,16 @@ def _detail_drawing(d: PlanDetail, mu: float, sides: list, same: dict[str, str],
     k = mu_F / mu
     x0, y0, x1, y1 = d.box
     c = complex(x0 + x1, y0 + y1) / 2
+    if d.fine:
+        # a reaction read off the detail (FRC56_PUMP's R05): the polygon laid again at μF_I, as it
+        # was read (``forceplans._Plans.group``), its window as large as the plan's ring enlarged,
+        # round that reaction's side there
+        r = next(q for q in d.fine if q.name == d.read)
+        c = (r.start + r.end) / 2
+        w, h = (x1 - x0) * k / 2, (y1 - y0) * k / 2
+        sides, k = list(d.fine), 1.0
+        x0, y0, x1, y1 = c.real - w, c.imag - h, c.real + w, c.imag + h
+        d = PlanDetail((x0, y0, x1, y1), d.choices, read=d.read)
     dstep = f"{step}: detail"
     det = Record(dstep)
     role = {"known": "absolute", "reaction": "result", "component": "relative"}
@@ -1663,7 +1680,8 @@ def _detail_drawing(d: PlanDetail, mu: float, sides: list, same: dict[str, str],
         drawn.append(Side(s.name, A, B, s.role))
     if x0 <= 0.0 <= x1 and y0 <= 0.0 <= y1:
         det.point(_pt(-c * k), layer="vectors", step=dstep)
-    lettered = [s for s in drawn if s.mm >= TINY_MM and s.name not in same]
+    # (the reaction read here named however short: its reading is what the detail is for)
+    lettered = [s for s in drawn if (s.mm >= TINY_MM or s.name == d.read) and s.name not in same]
     # each name nearer its own side than any other (labels.place_owned_line), tried along the side
     # on either hand: LINK50's detail of the stone's corner had "R54" by R05's line and Φ4's
     # leader across G5
@@ -2305,11 +2323,11 @@ def reaction_why(fp: ForcePlans, key: str, lang: str) -> str:
     gp = next(g for g in fp.groups if key in g.reactions)
     m = gp.reactions[key]
     from graphplan.graphic.draftsman import measure
-    if m.detail_mu:      # read off the detail: the plan's own side (its knowns laid off to the ruler) is what misses
+    if m.detail_mu:      # read off the detail, where the polygon is laid again at μF_I: its knowns rounded there miss
         side = next((s for s in gp.sides if s.name == m.name), None)
         known = sum(1 for s in gp.sides if s.role == "known")
         return word("fs why detail", lang, sym=sym, mm=num(measure(side.mm, fp.precision) if side else 0.0, lang),
-                    n=known, half=num(fp.precision / 2, lang))
+                    n=known, half=num(fp.precision / 2, lang), mu=num(m.detail_mu, lang))
     if m.mm < SHORT_MM:
         # what a short side misses by, said as the kinematics sheet says it (stop 58: FRC56_PUMP's R03
         # flagged "a short vector" alone): half a division's share of it and the rounded knowns it closes

@@ -136,6 +136,8 @@ class GroupPlan:
     segments: list[tuple[str, str]]                 # the group's links as point pairs
     mu_l: float = 0.0                               # the scale the group is drawn (and measured) at, m/mm
     mu_F: float = 0.0                               # the scale its force plan is drawn (and read) at, N/mm
+    detail_sides: list[Side] = field(default_factory=list)   # its polygon laid again at the detail's μF_I (mm
+                                                    # there), where a reaction is read off the detail
 
 
 @dataclass
@@ -349,6 +351,8 @@ class _Plans:
         self.ks, self.mech = ks, ks.mech
         self.groups: list[GroupPlan] = []
         self.detailed = False       # the group being drawn has a reaction read off its detail
+        self.fine: dict[str, tuple[float, complex]] = {}   # a reaction read off the detail: (μF_I, its side there, mm)
+        self.raw: dict[str, complex] | None = None        # a pass at μF_I: each reaction's side as laid (mm)
 
     def measured(self, key: str, vec_mm: complex, frm: str, on: str, pair, at: complex,
                  couple_line: complex | None = None, tau: complex | None = None) -> Measured:
@@ -360,8 +364,16 @@ class _Plans:
         100 N turned R12 by 1.6° and M_b by the plans 4.4 % off, review 56 #1)."""
         mm, force = self.d.read(vec_mm)
         mu_I = 0.0
-        if (tau is None and mm < READ_LEAST_MM and abs(vec_mm) * DETAIL_GAIN_MOST >= 1.0 and self.p > 0
-                and not self.detailed):
+        if self.raw is not None:
+            self.raw[key] = vec_mm
+        if key in self.fine:
+            # read off the detail, where the group's polygon is laid again at μF_I (``group``)
+            self.detailed = True
+            mu_I, fine = self.fine[key]
+            mm = measure(abs(fine), self.p)
+            force = mm * mu_I * fine / abs(fine) if abs(fine) > 0 else 0j
+        elif (tau is None and mm < READ_LEAST_MM and abs(vec_mm) * DETAIL_GAIN_MOST >= 1.0 and self.p > 0
+                and not self.detailed and self.raw is None):
             # the ruler reads the side 0 mm or one division at μF (FRC56_PUMP's R05: 0.23 mm, 1.15 N,
             # at 5 N/mm, printed 0): read off the plan's detail, the spot drawn again at a finer μF_I
             # (drawing.forces.plan_detail) — one a plan, its first such reaction's
@@ -400,6 +412,40 @@ class _Plans:
         return MomentEquation(about_name, links, terms, unknown, arm_m / self.d.mu_l, result)
 
     def group(self, gf) -> None:
+        """A group's construction (``_group``); where the ruler reads a reaction 0 mm or one
+        division on its plan (FRC56_PUMP's R05: 0.37 mm at 10 N/mm), the polygon laid again at the
+        detail's μF_I — every known rounded to the ruler at that scale, the closing lines crossing
+        there — and the reaction read off that: the plan's side enlarged kept the plan's rounding
+        (the knowns' 0.25 mm at 10 N/mm each, twice the reaction's 1.18 N) and read 3.75 N, +217 %.
+        Where the side laid at μF_I is still under ``READ_DETAIL_MM``, once more at the finer μF_I
+        it asks (within ``DETAIL_GAIN_MOST``)."""
+        known = {k: list(v) for k, v in self.d.known.items()}
+        self._group(gf)
+        fine = next(((m.key, m.detail_mu) for m in self.groups[-1].reactions.values() if m.detail_mu), None)
+        if fine is None:
+            return
+        key, mu_I = fine
+        mu_F = self.d.mu_F
+        for attempt in range(3):
+            # a pass at μF_I: nothing handed over, nothing kept but the sides laid
+            self.groups.pop()
+            self.d.known = {k: list(v) for k, v in known.items()}
+            self.d.mu_F, self.raw = mu_I, {}
+            self._group(gf)
+            side, sides = self.raw[key], self.groups[-1].sides
+            self.raw, self.d.mu_F = None, mu_F
+            finer = detail_scale(abs(side) * mu_I / mu_F, mu_F)
+            if abs(side) >= READ_DETAIL_MM or finer >= mu_I - 1e-12 or attempt == 2:
+                break
+            mu_I = finer
+        self.groups.pop()
+        self.d.known = known
+        self.fine = {key: (mu_I, side)}
+        self._group(gf)
+        self.fine = {}
+        self.groups[-1].detail_sides = sides
+
+    def _group(self, gf) -> None:
         d = gf.dyad
         self.current = (d.a, d.b)
         self.detailed = False

@@ -747,10 +747,12 @@ WORDS: dict[str, tuple[str, str]] = {
                     "φ = {turn}° from position 0 (crank angle {phi}° from the x axis)"),
     "fs force position short": ("φ = {turn}° від положення 0 ({phi}° від осі x)",
                                 "φ = {turn}° from position 0 ({phi}° from the x axis)"),
-    "fs why detail": ("{sym}: на плані коротший за поділку ({mm} мм), прочитано на виносному елементі I; похибку дає "
-                      "округлення відомих сил на плані ({n} сил по ±{half} мм)",
-                      "{sym}: shorter than a division on its plan ({mm} mm), read off detail I; its error is the "
-                      "known forces rounded on the plan ({n} forces, ±{half} mm each)"),
+    "fs why detail": ("{sym}: на плані коротший за поділку ({mm} мм), прочитано на виносному елементі I, де план "
+                      "побудовано знову при μ_F = {mu} Н/мм; похибку дає округлення відомих сил там ({n} сил по "
+                      "±{half} мм)",
+                      "{sym}: shorter than a division on its plan ({mm} mm), read off detail I, where the plan is "
+                      "laid again at μ_F = {mu} N/mm; its error is the known forces rounded there ({n} forces, "
+                      "±{half} mm each)"),
     "fs why short": ("{sym}: короткий вектор на плані ({mm} мм): пів поділки лінійки — {share} % його, а як сторона, "
                      "що замикає план, він несе округлення відомих сил ({n} сил по ±{half} мм)",
                      "{sym}: a short vector on its plan ({mm} mm): half a ruler division is {share} % of it, and as "
