@@ -118,3 +118,29 @@ def test_a_reaction_read_off_the_detail_is_read_where_the_detail_lays_the_polygo
     assert side, "R05 drawn in the detail"
     (x0, y0), (x1, y1) = side[0].points[:2]
     assert abs(math.hypot(x1 - x0, y1 - y0) - m.mm) <= fp.precision / 2 + 1e-9
+
+
+def test_the_weights_arm_names_on_the_lever_each_stand_over_its_own_stretch_of_their_line():
+    """LINK58's lever: the weights' arms all run left from the pole along one horizontal line (feet at
+    G3 47, G2 76, G5 84, G4 89 mm). Each arm's name reads as its own where it stands over its own
+    stretch of that line (from the next foot nearer the pole to its own; the outermost's also past
+    its foot, where nothing runs on), beside it or on a leader read at a glance (15 mm) — «h_G5»
+    went out on a leader over h_G2's stretch, after h_G2 took the end of its own stretch."""
+    from graphplan.drawing.forces import lever_record
+    from review_scenes import LINK58
+    fp = scene_force_plans(LINK58)
+    rec = lever_record(fp)
+    feet = {q.text.split(" =")[0]: complex(*q.points[1]) for q in rec.items
+            if q.role == "construction" and q.kind == "segment" and (q.text or "").startswith("h_{G")}
+    ray = {n: f for n, f in feet.items() if abs(f.imag) < 1e-6 and f.real < 0}
+    assert len(ray) >= 4
+    order = sorted(ray, key=lambda n: -ray[n].real)          # nearest the pole first
+    names = {q.text: q.bounds() for q in rec.items if q.kind == "text" and q.text in ray}
+    for k, n in enumerate(order):
+        inner = -ray[order[k - 1]].real if k else 0.0
+        outer = -ray[n].real
+        x0, y0, x1, y1 = names[n]
+        mid = -(x0 + x1) / 2
+        last = k == len(order) - 1
+        assert inner < mid < outer + (4.0 + 3.5 + 1.0 if last else 0.0), (n, inner, mid, outer)
+        assert min(abs(y0), abs(y1)) < 15.0, (n, y0, y1)         # beside it, or on a leader read at a glance

@@ -1962,13 +1962,14 @@ def _one_ray(f: complex, g: complex) -> bool:
     return dot(g, f) > 0 and abs((f.conjugate() * g).imag) <= ONE_RAY_SIN * abs(f) * abs(g)
 
 
-def _over(a: complex, b: complex):
+def _over(a: complex, b: complex, past: float = 0.0):
     """Whether a name's box stands over the stretch a–b of a line it shares with other arms: its
-    middle's projection inside it, 1 mm in from either end."""
+    middle's projection inside it, 1 mm in from either end — or up to ``past`` mm beyond b, where
+    no arm runs on past it (the outermost foot of the weights' line)."""
     d = b - a
     def accept(box) -> bool:
         t = dot(complex(0.5 * (box[0] + box[2]), 0.5 * (box[1] + box[3])) - a, d) / abs(d)
-        return 1.0 <= t <= abs(d) - 1.0
+        return 1.0 <= t <= abs(d) - 1.0 + (past + 1.0 if past else 0.0)
     return accept
 
 
@@ -1984,6 +1985,7 @@ def _arm_pieces(feet: list[complex]) -> dict[complex, tuple[complex, complex]]:
 
 
 ARM_LETTER_MM = 5.0   # a lever arm's letter anchored this far from its foot, back toward the pole
+ARM_PAST_MM = 4.0     # … or this far past its foot, where no other arm runs on beyond it
 
 
 _LEVERS: dict[tuple, Record] = {}
@@ -2156,7 +2158,11 @@ def _lever_record(fp: ForcePlans, lang: str) -> Record:
                           owned=((a_, b_), [replace(req, at=0.5 * (a_ + b_), toward=t) for t in (side, -side)])))
     middle = sum(turned.values()) / max(len(turned), 1)
     arms = _arm_pieces(list(arm_feet))
-    for foot, names in arm_feet.items():
+    # the arms with the least room first — the shortest pieces (LINK58: h_G5's 8 mm of the weights'
+    # line between G2's and G4's feet, left after h_G2 took the end of its 28 mm by G5's foot, went
+    # out on a leader across the lever); each tried by its foot too, and past it where no arm runs
+    # on beyond it (its piece's free end: a dimension's name at its end)
+    for foot, names in sorted(arm_feet.items(), key=lambda item: abs(arms[item[0]][1] - arms[item[0]][0])):
         # each arm named by its own segment from the pole, toward its foot (G1's and G2's arms run
         # on one line from the pole: over its own stretch of it), on the side toward the plan's
         # middle first; two forces on one line: one arm, both names (h_{G3,G4})
@@ -2165,9 +2171,13 @@ def _lever_record(fp: ForcePlans, lang: str) -> Record:
         text = arm_symbol(names[0]) if len(names) == 1 else "h_{" + ",".join(arm_symbol(n)[3:-1] for n in names) + "}"
         g, _ = arms[foot]
         ray = [f for f in arms if f != foot and _one_ray(f, foot)]
+        outer = not any(abs(f) > abs(foot) for f in ray)
+        piece = abs(foot - g)
+        past = (1.0, 1.0 + ARM_PAST_MM / piece) if outer and piece > 1e-9 else (1.0,)
         jobs.append(_Name(LabelRequest(at, text, side, LETTER, step=step), arms[foot],
                           [s for f, s in arms.items() if f != foot and f not in ray],
-                          (0.8, 0.65, 0.5, 0.9, 0.35), accept=_over(g, foot) if ray else None))
+                          (0.8, 0.65, 0.5, 0.9, 0.35) + past,
+                          accept=_over(g, foot, ARM_PAST_MM + LETTER if outer else 0.0) if ray else None))
     # the forces' names first: an arrow has the fewest spots its name reads as its own
     # the images' letters, then the forces' names one by one, each before the next (review 5: at
     # the ram), then the arms'
