@@ -144,3 +144,20 @@ def test_the_weights_arm_names_on_the_lever_each_stand_over_its_own_stretch_of_t
         last = k == len(order) - 1
         assert inner < mid < outer + (4.0 + 3.5 + 1.0 if last else 0.0), (n, inner, mid, outer)
         assert min(abs(y0), abs(y1)) < 15.0, (n, y0, y1)         # beside it, or on a leader read at a glance
+
+
+def test_the_point_a_block_presses_its_slotted_link_at_is_lettered_by_the_blocks_point():
+    """LINK59's II(2-3): R43, the block C's reaction on the slotted rocker O2E, acts where the block
+    rides — C, the point of the pair; it was an unlettered dot on the rocker between B and E."""
+    from review_scenes import LINK59
+    fp = scene_force_plans(LINK59)
+    gp = next(g for g in fp.groups if g.label == "II(2-3)")
+    rec = group_record(fp, gp)
+    mu = _mu(fp, gp)
+    c = next(f.at / mu for f in gp.forces if f.name == "R43")
+    kin, mech = fp.ks.kin, fp.ks.mech
+    block = next(n for n, lk in mech.links.items() if lk.slides_on is not None and "C" in lk.joints
+                 and mech.links[lk.slides_on].joints and lk.slides_on in gp.links)
+    assert abs(complex(kin.bodies[block].at(mech.links[block].local["C"])[0][0]) / mu - c) < 0.5
+    letters = [complex(*q.points[0]) for q in rec.items if q.kind == "text" and q.role == "label" and q.text == "C"]
+    assert letters and min(abs(z - c) for z in letters) < 8.0

@@ -144,6 +144,15 @@ def _point_name(fp: ForcePlans, link: str, z: complex, mu: float) -> str:
     body = fp.ks.kin.bodies[link]
     near = [(abs(complex(body.at(lk.local[p])[0][0]) / mu - z), p) for p in lk.local]
     hit = min(near, default=(1e9, ""))
+    if hit[0] >= 0.5:
+        # … or the point of another link's pair there: the block C riding in the link's slot, where
+        # the block's reaction R43 acts on the slotted rocker (LINK59's II(2-3): an unlettered dot
+        # on O2E between B and E)
+        mech, kin = fp.ks.mech, fp.ks.kin
+        others = [(abs(complex(kin.bodies[name].at(other.local[p])[0][0]) / mu - z), p)
+                  for name, other in mech.links.items() if name != link and other.slides_on == link
+                  for p in other.joints]
+        hit = min(others + [hit])
     return hit[1] if hit[0] < 0.5 else ""
 
 
