@@ -2345,8 +2345,13 @@ def reaction_why(fp: ForcePlans, key: str, lang: str) -> str:
     if m.detail_mu:      # read off the detail, where the polygon is laid again at μF_I: its knowns rounded there miss
         side = next((s for s in gp.sides if s.name == m.name), None)
         known = sum(1 for s in gp.sides if s.role == "known")
-        return word("fs why detail", lang, sym=sym, mm=num(measure(side.mm, fp.precision) if side else 0.0, lang),
-                    n=known, half=num(fp.precision / 2, lang), mu=num(m.detail_mu, lang))
+        # … and a tangential component laid there as its moment equation found it, arms measured at
+        # μl (FRC56_PUMP's R^τ24 12.54 N for 12.77 at 1:2.5: 0.23 N of R05's 1.18)
+        tau = [force_symbol(s.name, lang) for s in gp.sides
+               if s.role == "component" and s.name.endswith("τ")]
+        return word("fs why detail tau" if tau else "fs why detail", lang, sym=sym,
+                    mm=num(measure(side.mm, fp.precision) if side else 0.0, lang),
+                    n=known, half=num(fp.precision / 2, lang), mu=num(m.detail_mu, lang), tau=", ".join(tau))
     if m.mm < SHORT_MM:
         # what a short side misses by, said as the kinematics sheet says it (stop 58: FRC56_PUMP's R03
         # flagged "a short vector" alone): half a division's share of it and the rounded knowns it closes

@@ -753,6 +753,12 @@ WORDS: dict[str, tuple[str, str]] = {
                       "{sym}: shorter than a division on its plan ({mm} mm), read off detail I, where the plan is "
                       "laid again at μ_F = {mu} N/mm; its error is the known forces rounded there ({n} forces, "
                       "±{half} mm each)"),
+    "fs why detail tau": ("{sym}: на плані коротший за поділку ({mm} мм), прочитано на виносному елементі I, де план "
+                          "побудовано знову при μ_F = {mu} Н/мм; похибку дає округлення відомих сил там ({n} сил по "
+                          "±{half} мм) і {tau}, знайдена з плечима, виміряними на кресленні групи",
+                          "{sym}: shorter than a division on its plan ({mm} mm), read off detail I, where the plan is "
+                          "laid again at μ_F = {mu} N/mm; its error is the known forces rounded there ({n} forces, "
+                          "±{half} mm each) and {tau}, found with the arms measured on the group's drawing"),
     "fs why short": ("{sym}: короткий вектор на плані ({mm} мм): пів поділки лінійки — {share} % його, а як сторона, "
                      "що замикає план, він несе округлення відомих сил ({n} сил по ±{half} мм)",
                      "{sym}: a short vector on its plan ({mm} mm): half a ruler division is {share} % of it, and as "
