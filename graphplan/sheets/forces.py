@@ -1818,9 +1818,13 @@ def _plan_over_group(dr: ForceDrafter, nat: Natural, f: Form, p: Plan, mu: dict[
     """A force plan left with sides too short to draw (under ``forces.TINY_MM``, named under it)
     that cannot grow in its cell takes the room of its group's drawing: the group one standard step
     coarser (one step only), the plan at the finest step that then fits — taken where it names
-    fewer short sides than before. INCLINED_ROCKER53's II(4-5): its group at 1:2 (169 mm tall over
-    its plan) left the plan at 2 N/mm, a 3 × 13 mm polygon with R24τ, R05n and R45 under 3 mm; its
-    group at 1:2.5 lets it grow to 0.5 N/mm (review 53, frc53b #7)."""
+    fewer short sides than before, or as many while the plan grows by a larger factor than its group
+    shrinks. INCLINED_ROCKER53's II(4-5): its group at 1:2 (169 mm tall over its plan) left the
+    plan at 2 N/mm, a 3 × 13 mm polygon with R24τ, R05n and R45 under 3 mm; its group at 1:2.5
+    lets it grow to 0.5 N/mm (review 53, frc53b #7). Since a revolute reaction is drawn as
+    R^τ + R^n (5b4e801) its R05n stays under 3 mm down to 0.25 N/mm: "fewer" alone kept the plan at
+    1 N/mm, a 32 mm polygon with its R24n, R45, Φ4, R05τ knotted in 8 mm, beside 25 mm of its
+    group's room (frc59b: 0.5 N/mm, 65 mm, its group at the scheme's 1:2.5)."""
     from graphplan.drawing.forces import TINY_MM
     from graphplan.sheets.compose import coarser, finer
     fams = nat.families
@@ -1851,7 +1855,13 @@ def _plan_over_group(dr: ForceDrafter, nat: Natural, f: Form, p: Plan, mu: dict[
             if not _fits(nat, f, p, trial):
                 break
             best = (s, trial)
-        if best is not None and tiny({**trial_mu, p_key: best[0]}, i) < short:
+        if best is None:
+            continue
+        now = tiny({**trial_mu, p_key: best[0]}, i)
+        # fewer short sides; or as many, the plan grown by more than its group lost (the group a
+        # series step coarser, 1:2 → 1:2.5: ×1.25; the plan 1 → 0.5 N/mm: ×2)
+        gain = mu.get(p_key, mu["forces"]) / best[0] > g / mu.get(g_key, mu["groups"]) * (1 + 1e-9)
+        if now < short or (now <= short and gain):
             mu = {**trial_mu, p_key: best[0]}
             leaves = best[1]
     return mu
