@@ -85,3 +85,25 @@ def test_one_slider_keeps_its_plain_h():
     assert other_slides(plans) == []
     words = [q.text for q in _texts(rec)]
     assert any(w.startswith("H = ") for w in words) and not any(w.startswith("H_{") for w in words)
+
+
+
+def test_a_number_that_stood_on_a_long_leader_is_read_with_its_dwell():
+    """LINK57 at the A1's 1:2 (stop 57): the rocker's D dwells by D′ — positions 0, 1, 2, 11 within
+    1.2 mm — and D₃, 2.1 mm on (less than a number's height), found no free spot among the rocker's
+    lines nearer than 30 mm. It is numbered with the dwell's spot now; every number of D stands
+    within ``LONG_LEADER`` of a point it names."""
+    from graphplan.drawing.plans import LONG_LEADER
+    from review_scenes import LINK57
+    st = scene_study(LINK57)
+    plans = build_plans(st, mu_l=0.002)
+    rec = position_record(plans)
+    sc = plans.scheme
+    path = [where(sc, p.layout, sc.body_of("D"), "D") for p in plans.positions]
+    assert abs(path[3] - path[2]) < 2.5 < abs(path[3] - path[4])        # the scene as measured
+    numbers = [q for q in _texts(rec) if q.size <= 2.6 and all(t.isdigit() for t in q.text.split(", "))]
+    dwell = next(q for q in numbers if set(q.text.split(", ")) >= {"0", "1", "2", "11"} and
+                 min(_gap(q.ink(), path[k]) for k in (0, 1, 2, 11)) < LONG_LEADER)
+    assert "3" in dwell.text.split(", ")
+    for k, z in enumerate(path):       # each position of D read at a number near it
+        assert any(str(k) in q.text.split(", ") and _gap(q.ink(), z) < LONG_LEADER for q in numbers), k

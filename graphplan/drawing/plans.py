@@ -447,9 +447,10 @@ def swing(plans: Plans) -> float | None:
     return abs(math.degrees(cmath.phase(b / a)))
 
 
-def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Record:
+def position_record(plans: Plans, lettered: bool = True, lang: str = "uk", joined: tuple = ()) -> Record:
     """The position plan of all positions, with arcs, trajectories, extremes and labels (only the
-    lines when not ``lettered``: what a layout measures before the lettering is placed)."""
+    lines when not ``lettered``: what a layout measures before the lettering is placed). ``joined``:
+    (point, position, position) — a position numbered with another's spot (``far_numbers``)."""
     sc = plans.scheme
     mech = sc.mech
     rec = Record(title="position plan", scales={"mu_l": plans.mu_l})
@@ -556,9 +557,46 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
     lettered_at = {(other.key, name) for other in thick_lays if other.key != lay.key or len(thick_lays) > 1
                    for name in joints_at(sc, other) if name not in mech.frame
                    and name not in paired}          # B₈ says 8 there (a coulisse's A: its number beside it)
-    labels = position_numbers(plans, O, dots, skip=lettered_at)
-    labels += late
-    return place_labels(rec, labels)
+    numbers = position_numbers(plans, O, dots, skip=lettered_at, joined=joined)
+    placed = place_labels(rec, numbers + late)
+    more = () if joined else far_numbers(plans, placed, numbers)
+    return position_record(plans, lettered, lang, joined=more) if more else placed
+
+
+LONG_LEADER = 12.0    # mm: a position's number this far from its point is read on a long leader …
+JOIN_SPOT = 2.5       # … and is numbered with another spot of its point this near (a number's height) instead
+
+
+def far_numbers(plans: Plans, rec: Record, numbers: list[LabelRequest]) -> tuple:
+    """The positions whose number stands ``LONG_LEADER`` mm or more from its point (no spot nearer
+    was free) while another numbered spot of the same point lies within ``JOIN_SPOT`` — the height
+    of a number, nearer than two numbers can each stand beside their own — as (point, position,
+    the other spot's first position): numbered there together, as a student numbers a rocker's
+    dwell "0, 1, 2, 3, 11" (stop 57: LINK57's D₃, 2.1 mm from D₂, stood on a 30-mm leader across
+    the swing's arc and the rocker's positions, no free spot nearer among its lines)."""
+    sc = plans.scheme
+    texts = [q for q in rec.items if q.kind == "text"]
+    out = []
+    for name, _ in _numbered(plans):
+        path = [where(sc, p.layout, sc.body_of(name), name) for p in plans.positions]
+        for req in numbers:
+            ks = [k for k, z in enumerate(path) if abs(z - req.at) < 1e-9]
+            if not ks:
+                continue
+            same = [q.ink() for q in texts if q.text == req.text]
+            if not same:                       # not placed (sketched, or optional and dropped)
+                continue
+            gap = min(abs(complex(max(b[0] - req.at.real, 0.0, req.at.real - b[2]),
+                                  max(b[1] - req.at.imag, 0.0, req.at.imag - b[3]))) for b in same)
+            if gap < LONG_LEADER:
+                continue
+            k = ks[0]
+            mine = {int(t) for t in req.text.split(", ") if t.isdigit()}
+            near = [j for j, z in enumerate(path) if j not in mine and abs(z - path[k]) < JOIN_SPOT]
+            if near:
+                j = min(near, key=lambda j: abs(path[j] - path[k]))
+                out.append((name, k, j))
+    return tuple(out)
 
 
 SAME_POINT = 0.05     # mm drawn: two named points this near are one point (a centre of mass on its pivot, S₁ = 0)
@@ -722,7 +760,7 @@ SAME_DOT = 1.0         # mm: a drawn point this near a position's point is that 
 
 
 def position_numbers(plans: Plans, O: complex, dots: list[complex] = (),
-                     skip: set[tuple] = frozenset()) -> list[LabelRequest]:
+                     skip: set[tuple] = frozenset(), joined: tuple = ()) -> list[LabelRequest]:
     """The numbers of the positions at the crank pin, the output point and the groups' inner
     joints: each across its path beside its own point, read as nobody else's — nearer its point
     than any other numbered point of another position or any other drawn point (``dots``: a
@@ -737,7 +775,8 @@ def position_numbers(plans: Plans, O: complex, dots: list[complex] = (),
         rows.append((name, optional, path))
     labels = [str(p.index) if p.index is not None else f"{p.phi:g}°" for p in plans.positions]
     groups = {name: {g[0]: g for g in same_spots(path, [k for k, p in enumerate(plans.positions)
-                                                         if (p.key, name) not in skip])}
+                                                         if (p.key, name) not in skip],
+                                                  [(k, j) for n, k, j in joined if n == name])}
               for name, _, path in rows}
     out = []
     for k, p in enumerate(plans.positions):      # in the positions' order (the placing's priority)
@@ -761,15 +800,17 @@ def position_numbers(plans: Plans, O: complex, dots: list[complex] = (),
 SAME_SPOT = 1.2    # mm: a point's positions nearer each other than this are numbered together ("4, 7, 8")
 
 
-def same_spots(path: list[complex], keys: list[int]) -> list[list[int]]:
+def same_spots(path: list[complex], keys: list[int], joined: list[tuple[int, int]] = ()) -> list[list[int]]:
     """The positions ``keys`` of one point grouped where its points lie within ``SAME_SPOT`` of
     each other (chained), each group in the positions' order: a rocker dwelling near its extreme
     puts three positions within 1 mm, where three numbers cannot each sit beside its own point —
     the drawing numbers the spot once, "4, 7, 8", as a student does (stop 51: D's positions 5 and 7
-    were left unnumbered)."""
+    were left unnumbered). ``joined``: pairs of positions numbered together however far apart
+    (``far_numbers``)."""
     groups: list[list[int]] = []
+    pairs = {frozenset(p) for p in joined}
     for k in keys:
-        near = [g for g in groups if any(abs(path[k] - path[j]) < SAME_SPOT for j in g)]
+        near = [g for g in groups if any(abs(path[k] - path[j]) < SAME_SPOT or frozenset((k, j)) in pairs for j in g)]
         merged = [k] + [j for g in near for j in g]
         groups = [g for g in groups if g not in near] + [sorted(merged)]
     return sorted(groups)
