@@ -392,6 +392,43 @@ def stroke_ends(plans: Plans) -> list[Layout]:
     return [lays[i] for i in sorted({hi, lo})]
 
 
+def other_slides(plans: Plans) -> list[str]:
+    """The points of the sliders on frame guides other than the output slide — a V-twin's second
+    piston C — as the notes name them (``sheets.kintables.other_outputs``): each has its own extreme
+    positions and stroke on the position plan (review 59: B′, B″ and H were drawn, C had none)."""
+    from graphplan.exact.positions import point_slider
+    st = plans.study
+    if st.output.kind != "slide":
+        return []
+    mech = st.mech
+    names = [next(iter(link.local)) for link in mech.links.values()
+             if link.slides_on is not None and mech.guides[link.slides_on].body == FRAME
+             and next(iter(link.local)) != st.output.name]
+    return [c for c in dict.fromkeys(names) if point_slider(mech, c) is not None]
+
+
+def slide_ends(plans: Plans, name: str) -> list[Layout]:
+    """The extreme positions that bound the stroke of the slider at point ``name``: the output's
+    ``stroke_ends``; another slider's where its own velocity changes sign (``find_extremes``), the
+    largest and the smallest of its coordinate, in the crank's angle order (keys −100, −101)."""
+    st = plans.study
+    if st.output.kind == "slide" and name == st.output.name:
+        return stroke_ends(plans)
+    from graphplan.exact.positions import Output, find_extremes
+    from graphplan.graphic.position_plan import construct_position
+    memo = ("slide ends", name)
+    if memo not in st.memo:
+        out = Output("slide", name)
+        found = find_extremes(st.mech, st.structure, out)
+        ends: list[float] = []
+        if len(found) >= 2:
+            values = out.value(st.solve(list(found)))
+            hi, lo = int(max(range(len(found)), key=lambda i: values[i])), int(min(range(len(found)), key=lambda i: values[i]))
+            ends = [float(found[i]) for i in sorted({hi, lo})]
+        st.memo[memo] = ends
+    return [construct_position(plans.scheme, phi, plans.mu_l, -100 - k) for k, phi in enumerate(st.memo[memo])]
+
+
 def swing(plans: Plans) -> float | None:
     """The output rocker's swing ψ_max between its extreme positions, degrees (None for a slider, a
     link turning round or fewer than two extremes)."""
@@ -410,9 +447,10 @@ def swing(plans: Plans) -> float | None:
     return abs(math.degrees(cmath.phase(b / a)))
 
 
-def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Record:
+def position_record(plans: Plans, lettered: bool = True, lang: str = "uk", joined: tuple = ()) -> Record:
     """The position plan of all positions, with arcs, trajectories, extremes and labels (only the
-    lines when not ``lettered``: what a layout measures before the lettering is placed)."""
+    lines when not ``lettered``: what a layout measures before the lettering is placed). ``joined``:
+    (point, position, position) — a position numbered with another's spot (``far_numbers``)."""
     sc = plans.scheme
     mech = sc.mech
     rec = Record(title="position plan", scales={"mu_l": plans.mu_l})
@@ -423,8 +461,12 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
     crank = mech.crank
     O = where(sc, regular[0], FRAME, crank.pivot)
     r = crank.length / plans.mu_l
-    yokes = {n: yoke_spans(sc, every + plans.extremes, n, O, r) for n in mech.links if yoke_guide(mech, n)}
-    outlines = draw_frame(rec, sc, every + plans.extremes, thick_lays, drawn=every + plans.extremes, yokes=yokes)
+    # the other sliders' extreme positions (a V-twin's second piston): drawn, their points lettered
+    # C′, C″ and their strokes dimensioned, as the output's are
+    others = [lay for c in other_slides(plans) for lay in slide_ends(plans, c)]
+    yokes = {n: yoke_spans(sc, every + plans.extremes + others, n, O, r) for n in mech.links if yoke_guide(mech, n)}
+    outlines = draw_frame(rec, sc, every + plans.extremes + others, thick_lays, drawn=every + plans.extremes + others,
+                          yokes=yokes)
     rec.circle(_pt(O), r, role="trajectory", layer="construction", step="the crank pin's circle")
     for lay in every:
         draw_construction(rec, lay)
@@ -450,8 +492,10 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
             rec.add("polyline", [_pt(c) for c in catmull_rom(path)], role="trajectory",
                     layer="construction", step=f"trajectory of {name}")
     out = output_point(plans)
-    extremes = [lay for lay in stroke_ends(plans)
+    extremes = [lay for lay in stroke_ends(plans) + others
                 if all(abs((lay.phi - p.phi + 180.0) % 360.0 - 180.0) > 1e-6 for p in plans.positions)]
+    extremes = [lay for k, lay in enumerate(extremes)          # one drawing where two sliders stop at once
+                if all(abs((lay.phi - e.phi + 180.0) % 360.0 - 180.0) > 1e-6 for e in extremes[:k])]
     for lay in extremes:
         draw_links(rec, sc, lay, thick=False, role="projection", step="extreme position", yokes=yokes)
     for lay in every:
@@ -513,9 +557,46 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk") -> Re
     lettered_at = {(other.key, name) for other in thick_lays if other.key != lay.key or len(thick_lays) > 1
                    for name in joints_at(sc, other) if name not in mech.frame
                    and name not in paired}          # B₈ says 8 there (a coulisse's A: its number beside it)
-    labels = position_numbers(plans, O, dots, skip=lettered_at)
-    labels += late
-    return place_labels(rec, labels)
+    numbers = position_numbers(plans, O, dots, skip=lettered_at, joined=joined)
+    placed = place_labels(rec, numbers + late)
+    more = () if joined else far_numbers(plans, placed, numbers)
+    return position_record(plans, lettered, lang, joined=more) if more else placed
+
+
+LONG_LEADER = 12.0    # mm: a position's number this far from its point is read on a long leader …
+JOIN_SPOT = 2.5       # … and is numbered with another spot of its point this near (a number's height) instead
+
+
+def far_numbers(plans: Plans, rec: Record, numbers: list[LabelRequest]) -> tuple:
+    """The positions whose number stands ``LONG_LEADER`` mm or more from its point (no spot nearer
+    was free) while another numbered spot of the same point lies within ``JOIN_SPOT`` — the height
+    of a number, nearer than two numbers can each stand beside their own — as (point, position,
+    the other spot's first position): numbered there together, as a student numbers a rocker's
+    dwell "0, 1, 2, 3, 11" (stop 57: LINK57's D₃, 2.1 mm from D₂, stood on a 30-mm leader across
+    the swing's arc and the rocker's positions, no free spot nearer among its lines)."""
+    sc = plans.scheme
+    texts = [q for q in rec.items if q.kind == "text"]
+    out = []
+    for name, _ in _numbered(plans):
+        path = [where(sc, p.layout, sc.body_of(name), name) for p in plans.positions]
+        for req in numbers:
+            ks = [k for k, z in enumerate(path) if abs(z - req.at) < 1e-9]
+            if not ks:
+                continue
+            same = [q.ink() for q in texts if q.text == req.text]
+            if not same:                       # not placed (sketched, or optional and dropped)
+                continue
+            gap = min(abs(complex(max(b[0] - req.at.real, 0.0, req.at.real - b[2]),
+                                  max(b[1] - req.at.imag, 0.0, req.at.imag - b[3]))) for b in same)
+            if gap < LONG_LEADER:
+                continue
+            k = ks[0]
+            mine = {int(t) for t in req.text.split(", ") if t.isdigit()}
+            near = [j for j, z in enumerate(path) if j not in mine and abs(z - path[k]) < JOIN_SPOT]
+            if near:
+                j = min(near, key=lambda j: abs(path[j] - path[k]))
+                out.append((name, k, j))
+    return tuple(out)
 
 
 SAME_POINT = 0.05     # mm drawn: two named points this near are one point (a centre of mass on its pivot, S₁ = 0)
@@ -587,11 +668,11 @@ def primed(name: str, k: int) -> str:
     return f"{escape(head)}_{{{name[len(head):]}}}{mark}" if head and head != name else escape(name) + mark
 
 
-def extreme_order(plans: Plans) -> list[Layout]:
-    """The extreme positions in the order the crank reaches them from position 0 (the first ′, the
-    second ″): position 0 itself first where it is one."""
+def extreme_order(plans: Plans, name: str | None = None) -> list[Layout]:
+    """The extreme positions (of the output, or of the slider at point ``name``) in the order the crank
+    reaches them from position 0 (the first ′, the second ″): position 0 itself first where it is one."""
     st = plans.study
-    ends = stroke_ends(plans)
+    ends = stroke_ends(plans) if name is None else slide_ends(plans, name)
     turn = [float(st.from_position0(lay.phi)) for lay in ends]
     turn = [0.0 if t > 360.0 - 1e-6 else t for t in turn]
     return [lay for _, lay in sorted(zip(turn, ends), key=lambda t: t[0])]
@@ -608,16 +689,23 @@ def extreme_letters(rec: Record, plans: Plans, O: complex) -> list[LabelRequest]
     names = list(dict.fromkeys([out, sc.mech.crank.pin]))
     paths = {n: [where(sc, p.layout, sc.body_of(n), n) for p in plans.positions] for n in names}
     labels = []
-    for k, lay in enumerate(extreme_order(plans)[:2], 1):
-        for name in names:
-            X = where(sc, lay, sc.body_of(name), name)
-            rec.point(_pt(X), role="joint" if name == out else "dot", layer="mechanism", step="extreme position")
-            path = paths[name]
-            mid = sum(path, 0j) / len(path)
-            toward = X - O if name == sc.mech.crank.pin else (X - mid if abs(X - mid) > 1e-6 else 1j)
-            rivals = tuple(z for z in path if SAME_DOT < abs(z - X) < RIVALS_WITHIN)
-            labels.append(LabelRequest(X, primed(name, k), toward=toward, size=3.0, optional=True,
-                                       rivals=rivals, step="extreme position"))
+    sets = [(extreme_order(plans), names)]
+    other = other_slides(plans)
+    for c in other:               # a second piston: its own C′, C″ (the crank pin's A′, A″ are the output's)
+        paths[c] = [where(sc, p.layout, sc.body_of(c), c) for p in plans.positions]
+        sets.append((extreme_order(plans, c), [c]))
+    for order, who in sets:
+        for k, lay in enumerate(order[:2], 1):
+            for name in who:
+                X = where(sc, lay, sc.body_of(name), name)
+                rec.point(_pt(X), role="joint" if name in (out, *other) else "dot", layer="mechanism",
+                          step="extreme position")
+                path = paths[name]
+                mid = sum(path, 0j) / len(path)
+                toward = X - O if name == sc.mech.crank.pin else (X - mid if abs(X - mid) > 1e-6 else 1j)
+                rivals = tuple(z for z in path if SAME_DOT < abs(z - X) < RIVALS_WITHIN)
+                labels.append(LabelRequest(X, primed(name, k), toward=toward, size=3.0, optional=True,
+                                           rivals=rivals, step="extreme position"))
     return labels
 
 
@@ -672,7 +760,7 @@ SAME_DOT = 1.0         # mm: a drawn point this near a position's point is that 
 
 
 def position_numbers(plans: Plans, O: complex, dots: list[complex] = (),
-                     skip: set[tuple] = frozenset()) -> list[LabelRequest]:
+                     skip: set[tuple] = frozenset(), joined: tuple = ()) -> list[LabelRequest]:
     """The numbers of the positions at the crank pin, the output point and the groups' inner
     joints: each across its path beside its own point, read as nobody else's — nearer its point
     than any other numbered point of another position or any other drawn point (``dots``: a
@@ -687,7 +775,8 @@ def position_numbers(plans: Plans, O: complex, dots: list[complex] = (),
         rows.append((name, optional, path))
     labels = [str(p.index) if p.index is not None else f"{p.phi:g}°" for p in plans.positions]
     groups = {name: {g[0]: g for g in same_spots(path, [k for k, p in enumerate(plans.positions)
-                                                         if (p.key, name) not in skip])}
+                                                         if (p.key, name) not in skip],
+                                                  [(k, j) for n, k, j in joined if n == name])}
               for name, _, path in rows}
     out = []
     for k, p in enumerate(plans.positions):      # in the positions' order (the placing's priority)
@@ -711,15 +800,17 @@ def position_numbers(plans: Plans, O: complex, dots: list[complex] = (),
 SAME_SPOT = 1.2    # mm: a point's positions nearer each other than this are numbered together ("4, 7, 8")
 
 
-def same_spots(path: list[complex], keys: list[int]) -> list[list[int]]:
+def same_spots(path: list[complex], keys: list[int], joined: list[tuple[int, int]] = ()) -> list[list[int]]:
     """The positions ``keys`` of one point grouped where its points lie within ``SAME_SPOT`` of
     each other (chained), each group in the positions' order: a rocker dwelling near its extreme
     puts three positions within 1 mm, where three numbers cannot each sit beside its own point —
     the drawing numbers the spot once, "4, 7, 8", as a student does (stop 51: D's positions 5 and 7
-    were left unnumbered)."""
+    were left unnumbered). ``joined``: pairs of positions numbered together however far apart
+    (``far_numbers``)."""
     groups: list[list[int]] = []
+    pairs = {frozenset(p) for p in joined}
     for k in keys:
-        near = [g for g in groups if any(abs(path[k] - path[j]) < SAME_SPOT for j in g)]
+        near = [g for g in groups if any(abs(path[k] - path[j]) < SAME_SPOT or frozenset((k, j)) in pairs for j in g)]
         merged = [k] + [j for g in near for j in g]
         groups = [g for g in groups if g not in near] + [sorted(merged)]
     return sorted(groups)
@@ -787,28 +878,26 @@ def stroke_dimensions(rec: Record, plans: Plans, O: complex, lang: str = "uk") -
     st = plans.study
     if st.output.kind == "link":
         return swing_dimension(rec, plans, lang)
-    ends = stroke_ends(plans)
-    if st.output.kind != "slide" or len(ends) < 2:
+    if st.output.kind != "slide":
         return []
     sc = plans.scheme
     out = output_point(plans)
+    other = other_slides(plans)
+    labels: list[LabelRequest] = []
+    for name in [out, *other]:
+        # two sliders' strokes lettered apart, each by its point (H_B, H_C: a V-twin's pistons)
+        labels += _stroke_dimension(rec, plans, O, name, "H" if not other else f"H_{{{escape(name)}}}", lang)
+    ends = stroke_ends(plans)
+    if len(ends) < 2:
+        return labels
     X1, X2 = (where(sc, lay, sc.body_of(out), out) for lay in ends)
     if abs(X2 - X1) < 1e-6:
-        return []
+        return labels
     u = (X2 - X1) / abs(X2 - X1)
     n = 1j * u
     side = ((O - X1) * n.conjugate()).real          # O's side of the path (+ along n)
-    away = -n if side > 0 else n
     step = "dimensions"
-    away, off = dimension_place(rec, X1, u, away, abs(X2 - X1))
-    a, b = X1 + away * off, X2 + away * off
-    for X, Y in ((X1, a), (X2, b)):
-        rec.segment(_pt(X + away * 1.5), _pt(Y + away * 2.0), role="construction", layer="construction", step=step)
-    mid = 0.5 * (a + b)
-    rec.vector(_pt(mid), _pt(a), role="construction", layer="construction", step=step)
-    rec.vector(_pt(mid), _pt(b), role="construction", layer="construction", step=step)
     mm = 1000.0 * plans.mu_l
-    labels = [LabelRequest(mid, f"H = {_real_mm(abs(X2 - X1) * mm, lang)} {_MM.get(lang, 'mm')}", toward=away, size=3.5, step=step)]
     if len(st.structure.dyads) == 1 and abs(side) * mm >= 0.5:      # a crank-slider's offset
         # beside the crank's circle, on the side away from the slider: O's line and the path carried
         # there parallel to the path, the dimension line across them
@@ -824,6 +913,35 @@ def stroke_dimensions(rec: Record, plans: Plans, O: complex, lang: str = "uk") -
         rec.vector(_pt(c), _pt(b), role="construction", layer="construction", step=step)
         labels.append(LabelRequest(c, f"e = {_real_mm(abs(side) * mm, lang)} {_MM.get(lang, 'mm')}", toward=back, size=3.5, step=step))
     return labels
+
+
+def _stroke_dimension(rec: Record, plans: Plans, O: complex, name: str, letter: str,
+                      lang: str = "uk") -> list[LabelRequest]:
+    """The stroke of the slider at point ``name`` between its extreme positions (``slide_ends``),
+    dimensioned on the side of its path away from the crank where the dimension line crosses the
+    fewest lines (``dimension_place``) and lettered ``letter`` = its real size in mm."""
+    sc = plans.scheme
+    ends = slide_ends(plans, name)
+    if len(ends) < 2:
+        return []
+    X1, X2 = (where(sc, lay, sc.body_of(name), name) for lay in ends)
+    if abs(X2 - X1) < 1e-6:
+        return []
+    u = (X2 - X1) / abs(X2 - X1)
+    n = 1j * u
+    side = ((O - X1) * n.conjugate()).real          # O's side of the path (+ along n)
+    away = -n if side > 0 else n
+    step = "dimensions"
+    away, off = dimension_place(rec, X1, u, away, abs(X2 - X1))
+    a, b = X1 + away * off, X2 + away * off
+    for X, Y in ((X1, a), (X2, b)):
+        rec.segment(_pt(X + away * 1.5), _pt(Y + away * 2.0), role="construction", layer="construction", step=step)
+    mid = 0.5 * (a + b)
+    rec.vector(_pt(mid), _pt(a), role="construction", layer="construction", step=step)
+    rec.vector(_pt(mid), _pt(b), role="construction", layer="construction", step=step)
+    mm = 1000.0 * plans.mu_l
+    return [LabelRequest(mid, f"{letter} = {_real_mm(abs(X2 - X1) * mm, lang)} {_MM.get(lang, 'mm')}", toward=away,
+                         size=3.5, step=step)]
 
 
 SWING_PAST = 8.0    # mm: the swing's dimension arc this far beyond the rocker's end point (E′, E″)

@@ -1254,7 +1254,7 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
         """The velocity or acceleration plans' larger scales, smallest drawing first: the standard
         series' (``series_choices``; review 58 #2: the crank-rocker's A2 and A3 sets drew π a 145 mm
         at the lab's own 0.0272 (m/s²)/mm where the A1 draws 0.025)."""
-        return series_choices(fams[fam].principal, mu, fams[fam].target * SET_LARGEST)
+        return set_steps(fams[fam].principal, mu, fams[fam].target)
     best = None
     short = short_vectors(dr)
     r = room(f, later=True)      # the diagrams go on a later sheet where they do not fit beside the plan
@@ -1334,8 +1334,7 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                     # another sheet where a larger one's fewer columns do not (the six-bar's velocity
                     # plans stopped at p_v a 55 mm, a 1.5-mm v_B read 30 % off, where 69 mm kept 6 sheets)
                     for bigger in grown(fam, mu[fam]):
-                        if fams[fam].rel(bigger) <= SET_LARGEST and (got := pages({**mu, fam: bigger})) is not None \
-                                and got <= count:
+                        if (got := pages({**mu, fam: bigger})) is not None and got <= count:
                             mu = {**mu, fam: bigger}
                 while True:
                     bigger = finer(mu["position"])
@@ -1368,6 +1367,21 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     if b:
         chosen = replace(chosen, beside=b)
     return taller(dr, nat, chosen, lambda k: _laid_again(nat, chosen, diagrams_size(dr, nat, k), f))
+
+
+def set_steps(principal: float, mu: float, target: float) -> list[float]:
+    """The scales a set's velocity or acceleration plans grow to from ``mu``, the smallest drawing
+    first: the standard series' (``series_choices``) that draw the principal segment at most
+    ``SET_LARGEST`` times its ``target`` — and where the largest of them still draws it shorter than
+    its target, the series' next value past them too. The series steps by 1.25 to 2 times: the
+    agitator's A2 set drew π a 98.7 mm at 0.04 (m/s²)/mm, its target 120, because 0.025 draws
+    158 mm, 6 mm past the cap — a sheet 46 % empty under its acceleration plan (stop 59)."""
+    steps = series_choices(principal, mu, target * SET_LARGEST)
+    last = steps[-1] if steps else mu
+    if principal / last < target - 1e-9:
+        past = [m for m in series_choices(principal, last, math.inf)]
+        steps += past[:1]
+    return steps
 
 
 BESIDE_MOST = 4      # a set's first tables tried as one column beside the last acceleration plan: 2 … this many
