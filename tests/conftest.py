@@ -85,20 +85,32 @@ def pytest_configure(config):
 # the process's CPU seconds, the worker's pid) appended to it. ``--durations`` gives wall time, which
 # on a shared machine is mostly waiting (stop 54: 2 cores, load 15–17; a 7 s composition read 60 s);
 # CPU time ranks the suite's costs the same under any load. Sum by file:
-#   awk -F'\t' '{split($1,a,"::"); s[a[1]]+=$3} END {for (k in s) print s[k], k}' FILE | sort -gr
+#   awk -F'\t' 'NF==4 && $2!="children" {split($1,a,"::"); s[a[1]]+=$3} END {for (k in s) print s[k], k}' FILE | sort -gr
+# (and the commands' own CPU, phase "children", with $2=="children")
 CPU_LOG = os.environ.get("GRAPHPLAN_TEST_CPU")
 
 import time as _time  # noqa: E402
 
 if CPU_LOG:
 
+    import resource as _resource
+
+    def _children_cpu() -> float:
+        got = _resource.getrusage(_resource.RUSAGE_CHILDREN)
+        return got.ru_utime + got.ru_stime
+
     def _cpu_logged(phase: str):
+        # … and, on a line of its own (phase "children": costly.py reads only setup, call and teardown),
+        # the CPU of the commands, servers and browsers the phase ran and waited for — the two cores'
+        # other load, which the worker's own clock does not see
         @pytest.hookimpl(hookwrapper=True)
         def hook(item):
-            t = _time.process_time()
+            t, c = _time.process_time(), _children_cpu()
             yield
             with open(CPU_LOG, "a", encoding="utf-8") as out:
                 out.write(f"{item.nodeid}\t{phase}\t{_time.process_time() - t:.3f}\t{os.getpid()}\n")
+                if _children_cpu() - c >= 0.001:
+                    out.write(f"{item.nodeid}\tchildren\t{_children_cpu() - c:.3f}\t{os.getpid()}\n")
         return hook
 
     pytest_runtest_setup = _cpu_logged("setup")

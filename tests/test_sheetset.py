@@ -245,7 +245,11 @@ def lettering_of(svg: str) -> list[str]:
 
 def _sheets_of(text: str | Path, kind: str, lang: str):
     """The sheet composed alone (``conftest.composed``: the markup tests read its lettering, not the
-    project's numbering, which would compose the scene's other documents to count them)."""
+    project's numbering, which would compose the scene's other documents to count them). An example's
+    cam is a project of its own (numbered 1 of 1, nothing else composed): the gallery's shared sheet
+    (``conftest.example_sheet``), not composed a second time (3.7 s of CPU)."""
+    if kind == "cam" and isinstance(text, Path) and text.parent == EXAMPLES:
+        return example_sheet(text.stem, kind, "A1", lang)
     if kind == "cam":
         from graphplan.model.cam import load as load_cam
         scene = load_cam(text)

@@ -35,12 +35,16 @@ def graphplan(*args: str) -> subprocess.CompletedProcess:
 
 @pytest.fixture(scope="module")
 def pages(tmp_path_factory) -> dict[str, Path]:
+    """The shaper's page in either language, written by the command (``main``) in the worker: the same
+    files byte for byte as two ``python -m graphplan view`` processes, for 3.7 s of CPU instead of 7.3
+    (the second language reads the compositions the first remembered; the commands' own runs are
+    tested below)."""
+    from graphplan.cli.main import main
     folder = tmp_path_factory.mktemp("view")
     out = {}
     for lang in ("uk", "en"):
         path = folder / f"shaper_{lang}.html"
-        r = graphplan("view", str(SHAPER), "-o", str(path), "--lang", lang)
-        assert r.returncode == 0, r.stderr
+        assert main(["view", str(SHAPER), "-o", str(path), "--lang", lang]) == 0
         out[lang] = path
     return out
 

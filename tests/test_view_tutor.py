@@ -24,17 +24,19 @@ SIZES = [(390, 844), (1366, 768), (1920, 1080)]
 
 @pytest.fixture(scope="module")
 def shaper(tmp_path_factory) -> Path:
+    """(Written by the command in the worker, ``main``: the file a ``python -m graphplan view`` process
+    writes, byte for byte — test_view's determinism test compares the two — without the process.)"""
+    from graphplan.cli.main import main
     path = tmp_path_factory.mktemp("tutor") / "shaper.html"
-    r = graphplan("view", str(SHAPER), "-o", str(path), "--lang", "en")
-    assert r.returncode == 0, r.stderr
+    assert main(["view", str(SHAPER), "-o", str(path), "--lang", "en"]) == 0
     return path
 
 
 @pytest.fixture(scope="module")
 def cam_page(tmp_path_factory) -> Path:
+    from graphplan.cli.main import main
     path = tmp_path_factory.mktemp("tutor") / "cam.html"
-    r = graphplan("view", str(ROOT / "examples" / "cam_translating.toml"), "-o", str(path), "--lang", "uk")
-    assert r.returncode == 0, r.stderr
+    assert main(["view", str(ROOT / "examples" / "cam_translating.toml"), "-o", str(path), "--lang", "uk"]) == 0
     return path
 
 
