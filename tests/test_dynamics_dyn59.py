@@ -202,7 +202,7 @@ def test_the_energy_scale_fills_its_zone_and_the_flywheel_read_agrees(name, monk
     span = float(np.ptp(fw.dT)) * fw.mu_T                  # J
     k = math.floor(math.log10(fw.mu_T))
     values = sorted({m * 10.0 ** e for m in SERIES for e in (k - 1, k)})
-    finer = max(m for m in values if m < fw.mu_T * (1 - 1e-9))
+    finer = max(m for m in values if m <= fw.mu_T / sd.ENERGY_GAIN * (1 + 1e-9))   # the next step
     capped = span / finer > sd.ENERGY_MOST * size + 1e-9
     assert capped or any(abs(t - finer) <= 1e-12 * finer for t in tried), (name, fw.mu_T, finer, tried)
     # the paper: what the next step adds to the energy–mass diagram's ΔT extent (the curve, k and l)
@@ -227,6 +227,22 @@ def test_the_energy_scale_fills_its_zone_and_the_flywheel_read_agrees(name, monk
     assert read == pytest.approx(fw.total)
     assert abs(read - exact_J) / exact_J <= 0.5 / fw.kl + 0.015, (name, read, exact_J, fw.kl)
     assert abs(fw.error_pct(fw.flywheel)) <= 5.0
+
+
+@pytest.mark.slow
+def test_no_energy_scale_a_mere_rounding_finer():
+    """CYLINDER_REVIEW54's ΔT at μ_A = 1,047 J/mm: 1 J/mm, a value of the series under it, would draw it 5 %
+    taller and call it "redrawn at its own scale" — not a step (``ENERGY_GAIN``): its sheet keeps μ_A, as
+    the next real step (0,5) does not hold."""
+    from review_scenes import CYLINDER_REVIEW54
+    from graphplan.sheets import dynamics as sd
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    st = scene_study(CYLINDER_REVIEW54)
+    dyn = sd._analysed(st, None)
+    got = sd.construction(st, dyn, form("A1"), SheetOptions(precision=0.5, sheet="dynamics"))
+    fw = sd._built(dyn, SheetOptions(precision=0.5, sheet="dynamics"), got[0], got[1], got[7])
+    assert got[7] is None or got[7] <= fw.mu_A / sd.ENERGY_GAIN * (1 + 1e-9), got
 
 
 def test_a_given_energy_scale_is_drawn_and_read(link59):

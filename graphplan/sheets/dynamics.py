@@ -784,6 +784,7 @@ def _sizes(st: Study):
 _CONSTRUCTIONS: dict[tuple, tuple] = {}
 ENERGY_MOST = A_HEIGHT        # mm (× size): ΔT's span drawn at its own finer scale no taller than A(φ)'s height
 ENERGY_AXIS = 1               # … with the band's φ axis at most this many steps (``_lengths``) shorter than the one found
+ENERGY_GAIN = 1.25            # … and ΔT drawn at least this much taller (the series' least step, 2 → 2.5)
 
 
 def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, str, int, float, bool, float | None]:
@@ -1078,7 +1079,8 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
         """``got`` (a one-sheet composition) with ΔT(φ) and the energy–mass diagram at ΔT's own finer
         scale where the sheet has room for it (LAYOUT.md: each drawing at the largest standard scale
         that fits its zone; the agitator's ΔT(φ) 38 mm tall beside ~340 × 150 mm of bare paper): the
-        series' values finer than the construction's μ_T (``series_choices``) that draw ΔT's span no
+        series' values finer than the construction's μ_T by a step at least (``ENERGY_GAIN``: μ_A = 1,047 J/mm is
+        not redrawn at 1 J/mm; ``series_choices``) that draw ΔT's span no
         taller than ``ENERGY_MOST`` (A(φ)'s, whose ordinates it is read from), tried from the smallest
         step up while a composition still holds the band at the same scales L, size with a φ axis at
         most ``ENERGY_AXIS`` steps of ``_lengths`` shorter than the one found (the φ axes are free: no
@@ -1094,6 +1096,8 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
         span = float(np.ptp(fw.dT)) * fw.mu_T
         best = got + (None,)
         for m in reversed(series_choices(span, fw.mu_T, ENERGY_MOST * size_)):   # the smallest step first
+            if m > fw.mu_T / ENERGY_GAIN * (1 + 1e-9):      # not a step: μ_A 1,047 → 1 J/mm drew ΔT 5 % taller
+                continue
             mu_T[0] = m
             try:
                 g = held(L_, size_, quick=False, least=least)
