@@ -258,3 +258,15 @@ def test_a_given_energy_scale_is_drawn_and_read(link59):
     assert np.ptp(finer.dT) == pytest.approx(np.ptp(base.dT) * 2.5, abs=1.0)
     coarser = construct(link59, None, 0.5, L=330.0, size=1.0, energy=base.mu_A * 2)
     assert coarser.mu_T == coarser.mu_A
+
+
+def test_the_english_protractor_note_writes_tan(link59):
+    """LINK59's ψ (2.96°, 2.77°) are too small for a protractor: the English note says the tangents are drawn
+    by «tan ψ» as its formula line writes it (it said «tg ψ», the Ukrainian notation, review 58 #7); the
+    Ukrainian keeps «tg ψ»."""
+    from graphplan.graphic.flywheel import construct
+    from graphplan.report.dynamics import tangents_note
+    f = construct(link59, None, 0.5, L=330.0, size=1.15)
+    en, uk = tangents_note(f, "en"), tangents_note(f, "uk")
+    assert en is not None and "tan ψ" in en and "tg" not in en
+    assert uk is not None and "tg ψ" in uk
