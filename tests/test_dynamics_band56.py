@@ -25,7 +25,7 @@ def test_no_value_of_the_band_touches_a_projection(name):
     st = _scene(name)
     dyn = analyse(st, None)
     s = dynamics_scales(st, dyn, "A1")
-    f = redrawn(dyn, None, 0.5, L=s["L"], size=s["size"], given=None)
+    f = redrawn(dyn, None, 0.5, given=None, **s)
     for length in (0.5 * s["L"], 0.75 * s["L"], s["L"]):
         for lang in ("uk", "en"):
             parts, boxes = band(f, lang, length)

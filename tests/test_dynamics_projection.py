@@ -124,8 +124,8 @@ def test_the_projections_carry_the_constructions_ordinates(sheet):
     st = example(sheet.name)
     dyn = analyse(st, None)
     args = SimpleNamespace(positions=None, accel=None, precision=0.5, lang="uk", sheet="dynamics")
-    L, size, *_ = construction(st, dyn, form("A1"), args)
-    f = _built(dyn, args, L, size)
+    L, size, *_, energy = construction(st, dyn, form("A1"), args)
+    f = _built(dyn, args, L, size, energy)
     energy, inertia, witt = (_placed(sheet, n) for n in ("energy", "inertia", "wittenbauer"))
     assert energy.scales["mu_T"] == witt.scales["mu_T"] == f.mu_T and inertia.scales["mu_I"] == witt.scales["mu_I"]
     axis = [p.points for p in witt.items if p.kind == "vector" and p.step == "ΔT axis"][0]

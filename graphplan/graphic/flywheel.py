@@ -305,9 +305,13 @@ def mean_ordinates(dyn: Dynamics, turn: np.ndarray, mid_moment: np.ndarray, mu_M
 
 
 def construct(dyn: Dynamics, divisions: int | None = None, precision: float = 0.5, L: float | None = None,
-              H: float | None = None, slopes: str = "course", size: float = 1.0) -> Flywheel:
+              H: float | None = None, slopes: str = "course", size: float = 1.0,
+              energy: float | None = None) -> Flywheel:
     """The draftsman's flywheel construction (module docstring), every length read with the ruler;
-    ``size`` scales the drawn heights the scales aim at (a sheet with room to spare draws larger)."""
+    ``size`` scales the drawn heights the scales aim at (a sheet with room to spare draws larger);
+    ``energy``: ΔT(φ)'s own scale μ_T, J/mm, where the sheet has room to draw it finer than
+    ``own_energy_scale`` does (sheets.dynamics ``finer_energy``: the largest standard scale whose
+    construction the sheet holds) — taken only where finer than μ_A."""
     from graphplan.util.errors import GraphplanError
     st = dyn.study
     settings = st.mech.task.flywheel
@@ -336,6 +340,8 @@ def construct(dyn: Dynamics, divisions: int | None = None, precision: float = 0.
     A = read(A_drawn, precision)
     dT = read(A_drawn[-1] * x / L, precision) - A        # A_d and A_c read at each point, subtracted
     mu_T = own_energy_scale(float(np.ptp(dT)) * mu_A, mu_A, size)
+    if energy is not None and energy < mu_A * (1 - 1e-9):
+        mu_T = float(energy)
     if mu_T != mu_A:                                       # … and redrawn at ΔT's own scale
         dT = read(dT * mu_A / mu_T, precision)
     I = read(at.inertia / mu_I, precision)
@@ -471,7 +477,7 @@ class Redrawing:
 
 def redrawn(dyn: Dynamics, divisions: int | None = None, precision: float = 0.5, L: float | None = None,
             H: float | None = None, slopes: str = "course", size: float = 1.0,
-            given: str | None = None) -> Flywheel:
+            given: str | None = None, energy: float | None = None) -> Flywheel:
     """The construction a student hands in: drawn with ``divisions`` (``construct``); where its
     graphical flywheel or M*_d is past the lab's 5 % (``errors``), drawn again with more divisions —
     the first's × 2, × 3 … up to bounds.DYNAMICS_DIVISIONS (``finer``) — and the first within the
@@ -483,7 +489,7 @@ def redrawn(dyn: Dynamics, divisions: int | None = None, precision: float = 0.5,
     from graphplan.model.bounds import DYNAMICS_DIVISIONS
     if given is None and divisions is None and "divisions" in dyn.study.mech.task.flywheel:
         given = "scene"
-    first = construct(dyn, divisions, precision, L, H, slopes, size)
+    first = construct(dyn, divisions, precision, L, H, slopes, size, energy)
     before = errors(first)
     if not over(before):
         first.redrawn = Redrawing(first.divisions, first.divisions, before, before, given)
@@ -495,7 +501,7 @@ def redrawn(dyn: Dynamics, divisions: int | None = None, precision: float = 0.5,
         return first
     tried, fallback = 0, None
     for n in finer(first.divisions, DYNAMICS_DIVISIONS[1]):
-        f = construct(dyn, n, precision, L, H, slopes, size)
+        f = construct(dyn, n, precision, L, H, slopes, size, energy)
         tried += 1
         after = errors(f)
         if not over(after):

@@ -571,7 +571,7 @@ def tangents_note(f, lang: str) -> str | None:
         return (f"ψ замалі для транспортира: дотичні проводять за tg ψ (на {run}{mm} осі {im} підйом {hi}{mm} при "
                 f"ψ_{{max}}, {lo}{mm} при ψ_{{min}}), переносячи паралельно до дотику з кривою; на осі ΔT вони "
                 f"відтинають k{NB}={NB}{k}{mm} і l{NB}={NB}{l}{mm}, |kl|{NB}={NB}{kl}{mm}")
-    return (f"ψ is too small for a protractor: the tangents are drawn by tg ψ (a rise of {hi}{mm} at ψ_{{max}}, {lo}{mm} "
+    return (f"ψ is too small for a protractor: the tangents are drawn by tan ψ (a rise of {hi}{mm} at ψ_{{max}}, {lo}{mm} "
             f"at ψ_{{min}} over {run}{mm} of the {im} axis), moved parallel to touch the curve; they cut the "
             f"ΔT axis at k{NB}={NB}{k}{mm} and l{NB}={NB}{l}{mm}, |kl|{NB}={NB}{kl}{mm}")
 

@@ -18,7 +18,8 @@ from graphplan.drawing.layout import (GAP, Leaf, Placed, Row, Stack, arrange, ce
 from graphplan.exact.dynamics import analyse
 from graphplan.exact.positions import Study
 from graphplan.graphic.diagrams import LAB_LIMIT
-from graphplan.graphic.flywheel import Flywheel, redrawn
+from graphplan.graphic.flywheel import A_HEIGHT, Flywheel, redrawn
+from graphplan.graphic.scales import series_choices
 from graphplan.graphic.record import Record, line_pitch, text_width
 from graphplan.model.motors import latin
 from graphplan.report.dynamics import (amplified, amplified_note, approximate_note, chords_note, design_note, motor_note, dynamics_json, error_text, flywheel_decimals, flywheel_errors,
@@ -641,27 +642,29 @@ def _tables(doc: dict, lang: str, factor: float, f: Flywheel) -> list[tuple[str,
 _BUILT: dict[tuple, tuple] = {}
 
 
-def _built(dyn, args, L: float, size: float) -> Flywheel:
+def _built(dyn, args, L: float, size: float, energy: float | None = None) -> Flywheel:
     """The construction at (L, size): redrawn on more divisions where the first drawing's flywheel
     or M*_d is past the lab's 5 % (graphic.flywheel.redrawn; divisions the scene or the command
     gives are kept). Remembered per analysis (the very object), divisions, ruler and scales: the
     sheet draws the construction its search (``construction``) built already — the same object, so
-    the drawings remembered per flywheel (``wittenbauer_record``, ``band``) are not drawn again."""
+    the drawings remembered per flywheel (``wittenbauer_record``, ``band``) are not drawn again.
+    ``energy``: ΔT(φ)'s own μ_T (``finer_energy``), else the construction's rule."""
     divisions = getattr(args, "divisions", None)
-    key = (id(dyn), divisions, args.precision, L, size)
+    key = (id(dyn), divisions, args.precision, L, size, energy)
     hit = _BUILT.get(key)
     if hit is None or hit[0] is not dyn:
         if len(_BUILT) >= 64:
             _BUILT.pop(next(iter(_BUILT)))
         hit = _BUILT[key] = (dyn, redrawn(dyn, divisions, args.precision, L=L, size=size,
-                                          given="option" if divisions is not None else None))
+                                          given="option" if divisions is not None else None, energy=energy))
     return hit[1]
 
 
-def _drawn(dyn, args, L: float, size: float, lang: str, f: Flywheel | None = None) -> tuple[Flywheel, dict[str, Record]]:
+def _drawn(dyn, args, L: float, size: float, lang: str, f: Flywheel | None = None,
+           energy: float | None = None) -> tuple[Flywheel, dict[str, Record]]:
     """The construction at (L, size) (``_built``, or ``f``) and its drawings captioned, ω(φ) at its
     smallest (``_speed`` grows it into its zone once the composition is chosen)."""
-    f = f if f is not None else _built(dyn, args, L, size)
+    f = f if f is not None else _built(dyn, args, L, size, energy)
     drawn = records(f, lang, speed_zone=(0.0, 0.0))
     return f, {name: captioned(drawn[name], WORDS[lang][name]) for name in DRAWINGS}
 
@@ -779,16 +782,20 @@ def _sizes(st: Study):
 
 
 _CONSTRUCTIONS: dict[tuple, tuple] = {}
+ENERGY_MOST = A_HEIGHT        # mm (× size): ΔT's span drawn at its own finer scale no taller than A(φ)'s height
+ENERGY_AXIS = 1               # … with the band's φ axis at most this many steps (``_lengths``) shorter than the one found
+ENERGY_GAIN = 1.25            # … and ΔT drawn at least this much taller (the series' least step, 2 → 2.5)
 
 
-def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, str, int, float, bool]:
+def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, str, int, float, bool, float | None]:
     """The flywheel construction the dynamics sheet of ``f`` draws and how: the largest abscissa L
     and heights' size at which the classical composition (``_classical``) fits one sheet (both
     languages measured) — the scales, hence every number, do not depend on the band's layout —;
     then the band of the projections (``band``) at the longest φ axis (``_lengths``) at which a
     composition (``SHAPES``) holds it on that sheet, the tables lettered 3.5 mm where that costs
     nothing, the notes in the band's ``nook`` where they fit it (the column then the tables' alone):
-    (L, size, tables' factor, shape, table columns, the band's φ axis, notes in the nook); a set of sheets at
+    (L, size, tables' factor, shape, table columns, the band's φ axis, notes in the nook, ΔT's own μ_T
+    where the sheet holds it finer — ``finer_energy`` — else None); a set of sheets at
     those scales where none does (at the smallest where not even the classical one fits). The
     terminal's ``dynamics`` reports the same construction. The sizes are tried by halving the list
     (a larger size never fits where a smaller does not); each try draws the diagrams (a few ms).
@@ -798,7 +805,7 @@ def construction(st: Study, dyn, f: Form, args) -> tuple[float, float, float, st
     sheet's |kl| (``_a1_kl``)."""
     if _table_overflow(st, dyn, f, args):          # no composition holds the table: the smallest scales
         L, size = _sizes(st)[-1]                   # (what the search would end at), nothing drawn
-        return L, size, 1.0, "set", 1, _lengths(L)[-1], False
+        return L, size, 1.0, "set", 1, _lengths(L)[-1], False, None
     key = _construction_key(st, dyn, f, args)
     if key not in _CONSTRUCTIONS:
         if len(_CONSTRUCTIONS) >= 64:
@@ -842,22 +849,23 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
     drawn_at: dict = {}
     banded: dict = {}
     built_at: dict = {}
+    mu_T: list = [None]          # ΔT(φ)'s own scale the search tries (``finer_energy``); None: the rule's
 
     def built(L: float, size: float) -> Flywheel:      # the construction once for both languages
-        if (L, size) not in built_at:
-            built_at[(L, size)] = _built(dyn, args, L, size)
-        return built_at[(L, size)]
+        if (L, size, mu_T[0]) not in built_at:
+            built_at[(L, size, mu_T[0])] = _built(dyn, args, L, size, mu_T[0])
+        return built_at[(L, size, mu_T[0])]
 
     def measured(L: float, size: float, factor: float):
-        if (L, size) not in drawn_at:             # the drawings and the tables' content once per size
+        if (L, size, mu_T[0]) not in drawn_at:    # the drawings and the tables' content once per size
             per = []
             built_ = built(L, size)
             for lang in LANGS:
                 fw, drawn = _drawn(dyn, args, L, size, lang, built_)
                 doc = dynamics_json(fw)
                 per.append((lang, {n: _wh(r) for n, r in drawn.items()}, doc, lines_of(notes(fw, doc, lang)), fw))
-            drawn_at[(L, size)] = per
-        per = drawn_at[(L, size)]
+            drawn_at[(L, size, mu_T[0])] = per
+        per = drawn_at[(L, size, mu_T[0])]
         leaves = {name: Leaf(name, max(p[1][name][0] for p in per), max(p[1][name][1] for p in per))
                   for name in per[0][1]}
         tabs = [[(name, *_wh(rec)) for name, rec in _tables(doc, lang, factor, fw_)] for lang, _, doc, _, fw_ in per]
@@ -869,12 +877,12 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
 
     def band_and_nooks(L: float, size: float, length: float):
         """The band's leaf (both languages) and each language's band: its boxes and width (``nooks``)."""
-        if (L, size, length) not in banded:       # the band in both languages (its captions differ)
+        if (L, size, length, mu_T[0]) not in banded:    # the band in both languages (its captions differ)
             bx = [band(built(L, size), lang, length)[1] for lang in LANGS]
             wh = [_band_size(b) for b in bx]
-            banded[(L, size, length)] = (Leaf("band", max(a[0] for a in wh), max(a[1] for a in wh)),
-                                         [(b, w) for b, (w, _) in zip(bx, wh)])
-        return banded[(L, size, length)]
+            banded[(L, size, length, mu_T[0])] = (Leaf("band", max(a[0] for a in wh), max(a[1] for a in wh)),
+                                                  [(b, w) for b, (w, _) in zip(bx, wh)])
+        return banded[(L, size, length, mu_T[0])]
 
     def notes_in_nook(boxes_, per, shape: str, C: Leaf, leaves: dict[str, Leaf]) -> bool:
         """Each language's notes in its band's nook, the band centred in the box the composition
@@ -899,9 +907,9 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
         fw_ = built(L, size)
 
         def make(lang: str, el: float):
-            if (L, size, length, lang, el) not in drawn_bands:
-                drawn_bands[(L, size, length, lang, el)] = band(fw_, lang, length, el)
-            return drawn_bands[(L, size, length, lang, el)]
+            if (L, size, length, lang, el, mu_T[0]) not in drawn_bands:
+                drawn_bands[(L, size, length, lang, el, mu_T[0])] = band(fw_, lang, length, el)
+            return drawn_bands[(L, size, length, lang, el, mu_T[0])]
         zones = [({**{name: Leaf(name, *wh) for name, wh in p[1].items()}, "band": leaves["band"]}, C) for p in per]
         got = widened(fw_, length, zones, shape, foot, (0.0, 0.0, W, H), make)
         if got is None:
@@ -959,9 +967,10 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
                         return True
         return False
 
-    def held(L: float, size: float, quick: bool = scales_only):
+    def held(L: float, size: float, quick: bool = scales_only, least: float = 0.0):
         """The band at its longest φ axis some composition holds at (L, size) (the notes in the band's
-        nook where they fit it), or None; ``quick``: (L, size) where it holds at its shortest."""
+        nook where they fit it), or None; ``quick``: (L, size) where it holds at its shortest;
+        ``least``: no φ axis shorter than this tried."""
         if quick:                         # the band at its shortest φ axis (the notes in the column)
             shortest = _lengths(L)[-1]
             for factor in (TABLES, 1.0):
@@ -981,10 +990,12 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
         for factor in (TABLES, 1.0):
             leaves, tables, notes_, per = measured(L, size, factor)
             for length in _lengths(L):
-                least = band_least(built(L, size), length)      # no composition holds a band wider or
-                if least[0] > W + 1e-9 or least[1] > H + 1e-9:   # taller than the field: not drawn
+                if length < least - 1e-9:
+                    break
+                box = band_least(built(L, size), length)        # no composition holds a band wider or
+                if box[0] > W + 1e-9 or box[1] > H + 1e-9:       # taller than the field: not drawn
                     continue
-                if not least_holds(leaves, tables, notes_, Leaf("band", *least)):   # nor where no composition
+                if not least_holds(leaves, tables, notes_, Leaf("band", *box)):   # nor where no composition
                     continue                     # holds even its least box (stop 58: LINK57 drew 152 bands)
                 leaves["band"], nooks = band_and_nooks(L, size, length)
                 # the notes in the band's nook where they fit it (the column then holds the tables alone)
@@ -1064,12 +1075,45 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
         tw, th = extent(_tree(shape, leaves, C, foot_))
         return tw <= W + 1e-9 and th <= H + 1e-9
 
+    def finer_energy(got: tuple) -> tuple:
+        """``got`` (a one-sheet composition) with ΔT(φ) and the energy–mass diagram at ΔT's own finer
+        scale where the sheet has room for it (LAYOUT.md: each drawing at the largest standard scale
+        that fits its zone; the agitator's ΔT(φ) 38 mm tall beside ~340 × 150 mm of bare paper): the
+        series' values finer than the construction's μ_T by a step at least (``ENERGY_GAIN``: μ_A = 1,047 J/mm is
+        not redrawn at 1 J/mm; ``series_choices``) that draw ΔT's span no
+        taller than ``ENERGY_MOST`` (A(φ)'s, whose ordinates it is read from), tried from the smallest
+        step up while a composition still holds the band at the same scales L, size with a φ axis at
+        most ``ENERGY_AXIS`` steps of ``_lengths`` shorter than the one found (the φ axes are free: no
+        number depends on them; ΔT's scale sets |kl|) — the last that holds is drawn (a finer μ_T draws
+        every ΔT taller, so where one does not hold no finer one does). The flywheel's J = μ_T·|kl|/(ω_m²·δ)
+        is read off a longer |kl|: the ruler's 0.5 mm a smaller share of it. ``got`` with μ_T appended
+        (None: the rule's own, ``own_energy_scale``)."""
+        L_, size_, length = got[0], got[1], got[5]
+        axes = _lengths(L_)
+        at = next((k for k, g_ in enumerate(axes) if g_ <= length + 1e-9), len(axes) - 1)
+        least = axes[min(at + ENERGY_AXIS, len(axes) - 1)]
+        fw = built(L_, size_)
+        span = float(np.ptp(fw.dT)) * fw.mu_T
+        best = got + (None,)
+        for m in reversed(series_choices(span, fw.mu_T, ENERGY_MOST * size_)):   # the smallest step first
+            if m > fw.mu_T / ENERGY_GAIN * (1 + 1e-9):      # not a step: μ_A 1,047 → 1 J/mm drew ΔT 5 % taller
+                continue
+            mu_T[0] = m
+            try:
+                g = held(L_, size_, quick=False, least=least)
+            finally:
+                mu_T[0] = None
+            if g is None or g[:2] != (L_, size_):
+                break
+            best = g + (m,)
+        return best
+
     floor = one_sheet_floor(st, dyn, f, args)
     if found is not None:                 # the band: the largest scales from the classical ones down at
         start = sizes.index(found)        # which a composition holds it on one sheet (the compressor's
         got = larger(found) if upward and abs(built(*found).kl) >= floor - 1e-9 else None   # (the energy–mass
         if got is not None:                                                       # diagram first)
-            return got[:2] if scales_only else got
+            return got[:2] if scales_only else finer_energy(got)
         for k in range(start, len(sizes)):   # moments 348 mm tall at 1.5 left no room for any band there:
             if k > start and fit(k) is None:  # its one A1 sheet came out as three)
                 continue
@@ -1077,7 +1121,7 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
                 break
             got = held(*sizes[k])
             if got is not None:
-                return got
+                return got[:2] if scales_only else finer_energy(got)
     # else a set of sheets: each drawing at the scales a sheet of its own holds
 
     def on_a_page(b: Leaf) -> bool:       # over a later sheet's title block, or beside it
@@ -1167,7 +1211,7 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
                 if key in _SHORT:
                     _SHORT[key] = replace(_SHORT[key], kl=kl(L, size))
                 break
-    return L, size, 1.0, "set", 1, band_length(L, size), False
+    return L, size, 1.0, "set", 1, band_length(L, size), False, None
 
 
 ORDERED_READ = 0.02      # a set out of the order of the work (its tables first) only where in order |kl| would
@@ -1352,11 +1396,12 @@ def _wh(rec: Record) -> tuple[float, float]:
 
 def dynamics_scales(st: Study, dyn, format: str = "A1", divisions: int | None = None,
                     precision: float = 0.5) -> dict[str, float]:
-    """L and size of the flywheel construction the dynamics sheet of ``format`` draws — for
+    """L, size and ΔT's own μ_T (``finer_energy``; None: the construction's rule) of the flywheel
+    construction the dynamics sheet of ``format`` draws — for
     ``graphplan dynamics`` to report the construction the sheet draws."""
-    L, size, *_ = construction(st, dyn, form(format), SheetOptions(precision=precision, sheet="dynamics")
-                               if divisions is None else _Args(divisions, precision))
-    return {"L": L, "size": size}
+    L, size, *_, energy = construction(st, dyn, form(format), SheetOptions(precision=precision, sheet="dynamics")
+                                       if divisions is None else _Args(divisions, precision))
+    return {"L": L, "size": size, "energy": energy}
 
 
 class _Args:
@@ -1681,9 +1726,9 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
     left, I*(φ) turned under it: ``band``); ω(φ); the tables' column with the notes."""
     dyn = _analysed(st, getattr(args, "delta", None))
     _refuse_a_table_taller_than(st, dyn, f, args)
-    L, size, factor, shape, parts, length, in_nook = construction(st, dyn, f, args)
+    L, size, factor, shape, parts, length, in_nook, energy = construction(st, dyn, f, args)
     lang = args.lang
-    fw, drawn = _drawn(dyn, args, L, size, lang)
+    fw, drawn = _drawn(dyn, args, L, size, lang, energy=energy)
     doc = dynamics_json(fw)
     short = shortfall(st, dyn, f, args) if shape == "set" else None
     leaves = {name: Leaf(name, record=drawn[name]) for name in ("moments", "speed")}
