@@ -161,30 +161,3 @@ def test_cam58_rocking_phase_diagram_hatches_both_boundaries_of_the_region(cam58
     where = [{np.sign(((complex(*p.points[0]) - corner) * (b - a).conjugate()).real)
               for p in rec.items if p.step == f"region {j}"} for j, (a, b) in enumerate(lines)]
     assert all(len(w) == 1 for w in where)
-
-
-@pytest.mark.slow
-def test_cam58_a2_set_letters_its_positions_table_at_3_5_mm():
-    """CAM58's A2 set: the sheet of ϑ(φ), the table and the notes letters the table at 3,5 mm (it stood in
-    2,5-mm letters with ~45 mm blank under it: the set tried the A1's closer rows nowhere), the table within
-    the field, clear of the title block and of every other block on its sheet."""
-    import tomllib
-
-    from graphplan.model.cam import build
-    from graphplan.sheets.compose import SheetOptions
-    from graphplan.sheets.form import form
-    from graphplan.sheets.sheet import BUILDERS
-    from graphplan.sheets.compose import field_of
-    sheet = BUILDERS["cam"](build(tomllib.loads(CAM58), "<cam58>"), form("A2"), SheetOptions(lang="uk", sheet="cam"))
-    page = next(pg for pg in sheet.pages if any(p.name == "table" for p in pg.placed))
-    table = next(p for p in page.placed if p.name == "table")
-    assert min(q.size for q in table.record.items if q.kind == "text") >= 3.5
-    f = form("A2")
-    x0, y0, x1, y1 = field_of(f)
-    b = table.record.bounds()
-    assert x0 - 1e-6 <= b[0] and b[2] <= x1 + 1e-6 and y0 - 1e-6 <= b[1] and b[3] <= y1 + 1e-6
-    for p in page.placed:
-        if p is table:
-            continue
-        q = p.record.bounds()
-        assert q[2] <= b[0] or b[2] <= q[0] or q[3] <= b[1] or b[3] <= q[1], p.name

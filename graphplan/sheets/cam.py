@@ -1110,7 +1110,7 @@ def pressure_by_table(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lan
         leaf = pressure_leaf(sol, g, lang, w, _pressure_cap(region) * part, True)
         if leaf is None:
             continue
-        for size, row in TABLE_SIZES + CLOSER_ROWS + (BASE_TABLE,):
+        for size, row in TABLE_SIZES + ((2.5, 6.0),):
             tab = Leaf("table", record=positions_table(doc, lang, row, size))
             nts = Leaf("notes", record=note_block(lines, max(TITLE, min(300.0, region[2] - region[0] - tab.w - GAP))))
             for again in (kept_together(leaves + [leaf], tab, lines, nts, region, keep, later),  # under the profile
@@ -1153,7 +1153,7 @@ def _with_table(drawings: list, doc: dict, lang: str, lines: list[str], region, 
     """The set's sheets with ``drawings``, Table 1 at each of its sizes (TABLE_SIZES, the largest
     first) and the notes kept with it — each arrangement taking no more sheets than ``laid`` and
     leaving no sheet to the notes alone, in that order."""
-    for size, row in TABLE_SIZES + CLOSER_ROWS + (BASE_TABLE,):
+    for size, row in TABLE_SIZES + ((2.5, 6.0),):
         tab = Leaf("table", record=positions_table(doc, lang, row, size))
         nts = Leaf("notes", record=note_block(lines, max(TITLE, min(300.0, region[2] - region[0] - tab.w - GAP))))
         again = kept_together(drawings, tab, lines, nts, region, keep, later, side)
