@@ -160,4 +160,4 @@ def test_cam58_rocking_phase_diagram_hatches_both_boundaries_of_the_region(cam58
     # side of the corner only, on opposite sides for the two lines
     where = [{np.sign(((complex(*p.points[0]) - corner) * (b - a).conjugate()).real)
               for p in rec.items if p.step == f"region {j}"} for j, (a, b) in enumerate(lines)]
-    assert all(len(w) == 1 for w in where)
+    assert all(len(w) == 1 for w in where) and where[0] != where[1]
