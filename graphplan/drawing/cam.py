@@ -664,23 +664,29 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         arc = A + abs(A) * np.exp(1j * t)
         rec.add("polyline", list(zip(arc.real, arc.imag)), role="trajectory", layer=LAYER, step="O locus")
         labels.append(LabelRequest(complex(arc[0]), "a", toward=1 + 0j, size=TEXT, step="O locus"))
-    if not cam.rocking and math.isfinite(g.R0_drawn) and abs(sol.geometry.R0 - g.R0_drawn) > 1e-9:
-        # a given R0 above the smallest: the region's point on O's line nearest C₀, O_min, marked —
-        # |O_min C₀| the smallest R0 the notes print as read off the diagram (stop 50: only the given
-        # R0 was drawn, under a title naming the smallest); a given R0 BELOW the smallest the same, O_min
-        # then below O, O outside the region (review 58 #5: the caption named the smallest, unmarked)
-        e = sol.geometry.e
-        O_min = 1j * (math.sqrt(sol.geometry.R0 ** 2 - e ** 2) - math.sqrt(g.R0_drawn ** 2 - e ** 2)) / mu
-        if abs(O_min - O) >= O_MIN_APART:
-            rec.point(_pt(O_min), role="pole", layer=LAYER, step="O min")
-            labels.append(LabelRequest(O_min, "O_{min}", toward=-1 + 0j, size=TEXT, step="O min"))
+    # the smallest R0's centre O_min beside the chosen O (stop 50: a given R0 above the smallest; review 58 #5:
+    # a given R0 below it, O_min then below O, O outside the region; review 59 #4: R0 rounded up from the
+    # smallest, O_min 3 mm above O at the [ϑ] lines' crossing, unlettered while the caption named the
+    # smallest) — |O_min C₀| the smallest R0 the notes print as read off the diagram, O_min marked and
+    # lettered, nearer its own dot than O's (else on a leader); closer than two dots a note says how far
+    o_min, o_rivals = smallest_centre(sol, g, mu, complex(C[0])), ()
+    if o_min is not None:
+        apart = abs(o_min - O)
+        if apart >= DOTS_APART:
+            near = apart < O_MIN_APART
+            o_rivals = (o_min,) if near else ()
+            rec.point(_pt(o_min), role="pole", layer=LAYER, step="O min")
+            labels.append(LabelRequest(o_min, "O_{min}", toward=-1 + 0j, size=TEXT, step="O min",
+                                       rivals=(O,) if near else ()))
+        else:
+            labels.append(LabelRequest(O, _o_min_note(apart, lang), toward=-1 + 0j, size=TEXT, step="O min"))
     rec.point((O.real, O.imag), role="pole", layer=LAYER, step="O")
     rec.segment(_pt(O), _pt(C[0]), role="construction", layer=LAYER, step="R0")   # |OC₀| = R0, measured
     labels.append(LabelRequest(0.5 * (O + C[0]), _chosen_R0(sol, g, lang), toward=1 + 0j, size=TEXT))
     if not cam.rocking and abs(C[0].real) > 0.5:
         _offset_dimension(rec, _pt(O), (C[0].real, 0.0))
         labels.append(LabelRequest(complex(C[0].real / 2, 0.0), "e", toward=-1j, size=TEXT))
-    labels.append(LabelRequest(O, "O", toward=-1j, size=TEXT))
+    labels.append(LabelRequest(O, "O", toward=-1j, size=TEXT, rivals=o_rivals))
     # the axis of ds/dφ: a translating follower's through C0 (s = 0) square to its axis, lettered at its
     # end; a rocking follower's ds/dφ lies along the arm's line, lettered at the end of the longest
     j = int(np.argmax(np.abs(K - C)))
@@ -714,6 +720,35 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     return rec
 
 
+def smallest_centre(sol, g, mu: float, C0: complex) -> complex | None:
+    """Where the smallest R0 read off the phase diagram puts the cam's centre, O_min (drawing mm, O at 0),
+    where the profile's R0 is over or under it (None where it is that one): a translating follower's on
+    O's line parallel to its axis, |O_min C₀| = R0_drawn (the legs √(R0² − e²) differ by the shift); a
+    rocking follower's on O's locus, the arc of radius a about the arm's pivot A, on O's side of AC₀."""
+    if not math.isfinite(g.R0_drawn) or abs(sol.geometry.R0 - g.R0_drawn) <= 1e-9:
+        return None
+    r = g.R0_drawn / mu
+    if not sol.cam.rocking:
+        e = sol.geometry.e
+        return 1j * (math.sqrt(sol.geometry.R0 ** 2 - e ** 2) - math.sqrt(g.R0_drawn ** 2 - e ** 2)) / mu
+    A = complex(sol.cam.centre_distance / mu)
+    d = abs(C0 - A)
+    w = (C0 - A) / d
+    x = (d * d + abs(A) ** 2 - r * r) / (2.0 * d)
+    if abs(x) > abs(A):
+        return None
+    side = 1.0 if ((0j - A) * w.conjugate()).imag >= 0 else -1.0
+    return A + w * complex(x, side * math.sqrt(abs(A) ** 2 - x * x))
+
+
+def _o_min_note(apart: float, lang: str) -> str:
+    """O_min within two dots of O: one note by O how far it lies (drawn mm), for the caption names both."""
+    x = f"{apart:.1f}"
+    if x == "0.0":
+        return "O = O_{min}"
+    return f"O_{{min}} за {x.replace('.', ',')} мм від O" if lang == "uk" else f"O_{{min}} {x} mm from O"
+
+
 def _chosen_R0(sol, g, lang: str) -> str:
     """The letter of |OC₀| on a translating follower's phase diagram: «R_0 = 39 мм», the radius taken,
     where it is over the smallest read off the diagram — O is then the centre chosen in the region, not
@@ -725,7 +760,8 @@ def _chosen_R0(sol, g, lang: str) -> str:
     return f"R_0 = {num(sol.geometry.R0 * 1000.0, lang, 3)} {'мм' if lang == 'uk' else 'mm'}"
 
 
-O_MIN_APART = 6.0    # mm: O_min marked only this far from O at least (a given R0 well over the smallest)
+O_MIN_APART = 6.0    # mm: O_min this far from O and more lettered freely, nearer: its letter nearer it than O (rivals)
+DOTS_APART = 2.0     # mm: O_min nearer O than this (the dots would touch) said in a note by O, not dotted
 LOCUS_MM = 20.0      # mm: a rocking follower's arc of O (radius a about the pivot) drawn either side of O
 ENDS_APART = 24.0    # mm: the two [ϑ] lines' ends at least this far apart (a letter is ~19 mm long)
 PAST_O = 24.0        # mm: each [ϑ] line drawn past O's foot on it (room for its hatching and letter)
