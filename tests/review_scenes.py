@@ -8311,3 +8311,30 @@ planets = 3
 module = 0.004
 rpm = 960
 '''
+
+
+# cam59b: review 59's scene (c): a translating KNIFE-EDGE follower, the offset "auto", the cam counter-clockwise,
+# R0 rounded up to 34 mm from the smallest 33,2 — O_min 3 mm above O, lettered on the phase diagram (finding 4).
+REVIEW_CAM59C = '''
+title = "Кулачковий механізм з поступальним вістряним штовхачем"
+title_en = "Disc cam with a translating knife-edge follower"
+designation = "ТММ.КП.59.500"
+
+[sheet]
+student = "Рецензент Р. Р."
+teacher = "Викладач В. В."
+group = "МБ-59"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.03
+offset = "auto"
+roller_radius = 0
+phases_deg = { rise = 120, dwell_far = 30, return = 90, dwell_near = 120 }
+laws = { rise = "cycloidal", return = "cosine" }
+pressure_angle_deg = { rise = 30, return = 35 }
+rpm = 200
+direction = "ccw"
+divisions = 12
+'''

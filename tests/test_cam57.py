@@ -134,12 +134,15 @@ def test_the_excess_is_marked_on_the_pressure_angle_diagram(small):
 
 def test_the_phase_diagrams_caption_names_a_given_radius(small):
     """A given R0: the phase diagram's caption names the smallest and the given R0 (O is drawn at the
-    given one); a chosen R0 keeps «найменший R_0»."""
+    given one); a chosen R0 keeps «найменший R_0» where O is drawn at the smallest read, else names both
+    («найменший і прийнятий R_0»: review 59 #4, O drawn at the rounded-up R0, O_min beside it)."""
     from graphplan.sheets.cam import _captions
     assert _captions(small[2], small[0], "uk")["phase"][0].endswith("найменший і заданий R_0")
     assert _captions(small[2], small[0], "en")["phase"][0].endswith("smallest and given R_0")
     chosen = dataclasses.replace(small[0], base_radius=None)
-    assert _captions(small[2], chosen, "uk")["phase"][0].endswith("), найменший R_0")
+    assert _captions(small[2], chosen, "uk")["phase"][0].endswith("), найменший і прийнятий R_0")
+    at_smallest = dataclasses.replace(small[2], R0=small[2].R0_drawn)
+    assert _captions(at_smallest, chosen, "uk")["phase"][0].endswith("), найменший R_0")
 
 
 # -- review 57 finding 6: the uk sheet of c_cam dropped «Таблиця 1. Вихідні дані» that its en sheet carried ------

@@ -15,7 +15,7 @@ import numpy as np
 from graphplan.drawing.labels import LabelRequest, place_labels
 from graphplan.exact.cam import Solution, centre_path, jump_points, motion, profile
 from graphplan.graphic.cam import CamConstruction, division_numbers, phase_curve, working_angle
-from graphplan.graphic.record import Record
+from graphplan.graphic.record import POINT_INK, Record
 from graphplan.drawing.diagrams import AXIS_W   # a diagram's axes: solid (GOST 2.303); dash-dot is for centre lines
 
 LAYER = "cam"
@@ -612,20 +612,31 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     phase_all = np.concatenate([np.asarray(g.phase), fine_phase])
     ends: list[complex] = []
     bounds: list[tuple[complex, complex, complex]] = []
+    # the boundary of the allowed region: of the lines at ±[ϑ] to the follower's motion through the
+    # phase's drawn points, the one O is nearest (allowed_line: the textbook's tangent at [ϑ], not the
+    # line through the point seen at the largest angle, which cut the curve where that phase does not
+    # bind), drawn from its point to a little past O's foot on it
+    # — of the drawn points and the curve drawn through them: the line touches the curve, never
+    # cuts it between two divisions (stop 50)
+    lines = [allowed_line(K_all, u_all, np.flatnonzero(phase_all == ph), math.radians(cam.allowed[ph]), O)
+             for ph in (0, 1)]
+    reach = [max(float(((O - K_all[k]) * d.conjugate()).real), 0.0) + PAST_O for k, _, d in lines]
+    met = _crossing([(K_all[k], d) for k, _, d in lines])
+    wedge = False
+    if met is not None and all(t > 0.0 for t in met) and 0.0 < max(t - r for t, r in zip(met, reach)) <= CROSS_REACH:
+        # the lines cross a little past their ends (CAM58: the rocking arm's 40° and 45° lines, 10° apart,
+        # 20 mm past): both drawn to the crossing and on, the region's two boundaries meeting there as the
+        # lab draws the wedge — else only the line nearer O bounded the drawn part and was hatched alone
+        # (each letter then on its own side of the wedge: the ends need not stand ENDS_APART apart)
+        reach = [max(r, t + PAST_CROSS) for t, r in zip(met, reach)]
+        wedge = True
     for ph in (0, 1):
-        # the boundary of the allowed region: of the lines at ±[ϑ] to the follower's motion through the
-        # phase's drawn points, the one O is nearest (allowed_line: the textbook's tangent at [ϑ], not the
-        # line through the point seen at the largest angle, which cut the curve where that phase does not
-        # bind), drawn from its point to a little past O's foot on it
-        # — of the drawn points and the curve drawn through them: the line touches the curve, never
-        # cuts it between two divisions (stop 50)
-        k, turn, d = allowed_line(K_all, u_all, np.flatnonzero(phase_all == ph), math.radians(cam.allowed[ph]), O)
-        foot = max(float(((O - K_all[k]) * d.conjugate()).real), 0.0)
-        length = foot + PAST_O
+        k, turn, d = lines[ph]
+        length = start = reach[ph]
         end = K_all[k] + d * length
         # the two lines cross near O: each lettered at its own end, the ends drawn ENDS_APART apart at least
         # (review 11: both [ϑ] lettered within 15 mm of O, beside "0, 17" and R0, read as either line's)
-        while ends and abs(end - ends[0]) < ENDS_APART and length < foot + PAST_O + 40.0:
+        while ends and not wedge and abs(end - ends[0]) < ENDS_APART and length < start + 40.0:
             length += 2.0
             end = K_all[k] + d * length
         ends.append(end)
@@ -653,23 +664,29 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
         arc = A + abs(A) * np.exp(1j * t)
         rec.add("polyline", list(zip(arc.real, arc.imag)), role="trajectory", layer=LAYER, step="O locus")
         labels.append(LabelRequest(complex(arc[0]), "a", toward=1 + 0j, size=TEXT, step="O locus"))
-    if not cam.rocking and math.isfinite(g.R0_drawn) and abs(sol.geometry.R0 - g.R0_drawn) > 1e-9:
-        # a given R0 above the smallest: the region's point on O's line nearest C₀, O_min, marked —
-        # |O_min C₀| the smallest R0 the notes print as read off the diagram (stop 50: only the given
-        # R0 was drawn, under a title naming the smallest); a given R0 BELOW the smallest the same, O_min
-        # then below O, O outside the region (review 58 #5: the caption named the smallest, unmarked)
-        e = sol.geometry.e
-        O_min = 1j * (math.sqrt(sol.geometry.R0 ** 2 - e ** 2) - math.sqrt(g.R0_drawn ** 2 - e ** 2)) / mu
-        if abs(O_min - O) >= O_MIN_APART:
-            rec.point(_pt(O_min), role="pole", layer=LAYER, step="O min")
-            labels.append(LabelRequest(O_min, "O_{min}", toward=-1 + 0j, size=TEXT, step="O min"))
+    # the smallest R0's centre O_min beside the chosen O (stop 50: a given R0 above the smallest; review 58 #5:
+    # a given R0 below it, O_min then below O, O outside the region; review 59 #4: R0 rounded up from the
+    # smallest, O_min 3 mm above O at the [ϑ] lines' crossing, unlettered while the caption named the
+    # smallest) — |O_min C₀| the smallest R0 the notes print as read off the diagram, O_min marked and
+    # lettered, nearer its own dot than O's (else on a leader); closer than two dots a note says how far
+    o_min, o_rivals = smallest_centre(sol, g, mu, complex(C[0])), ()
+    if o_min is not None:
+        apart = abs(o_min - O)
+        if apart >= DOTS_APART:
+            near = apart < O_MIN_APART
+            o_rivals = (o_min,) if near else ()
+            rec.point(_pt(o_min), role="pole", layer=LAYER, step="O min")
+            labels.append(LabelRequest(o_min, "O_{min}", toward=-1 + 0j, size=TEXT, step="O min",
+                                       rivals=(O,) if near else ()))
+        else:
+            labels.append(LabelRequest(O, _o_min_note(apart, lang), toward=-1 + 0j, size=TEXT, step="O min"))
     rec.point((O.real, O.imag), role="pole", layer=LAYER, step="O")
     rec.segment(_pt(O), _pt(C[0]), role="construction", layer=LAYER, step="R0")   # |OC₀| = R0, measured
     labels.append(LabelRequest(0.5 * (O + C[0]), _chosen_R0(sol, g, lang), toward=1 + 0j, size=TEXT))
     if not cam.rocking and abs(C[0].real) > 0.5:
-        rec.segment(_pt(O), (C[0].real, 0.0), role="construction", layer=LAYER, step="offset e")
+        _offset_dimension(rec, _pt(O), (C[0].real, 0.0))
         labels.append(LabelRequest(complex(C[0].real / 2, 0.0), "e", toward=-1j, size=TEXT))
-    labels.append(LabelRequest(O, "O", toward=-1j, size=TEXT))
+    labels.append(LabelRequest(O, "O", toward=-1j, size=TEXT, rivals=o_rivals))
     # the axis of ds/dφ: a translating follower's through C0 (s = 0) square to its axis, lettered at its
     # end; a rocking follower's ds/dφ lies along the arm's line, lettered at the end of the longest
     j = int(np.argmax(np.abs(K - C)))
@@ -703,6 +720,35 @@ def phase_diagram(sol: Solution, g: CamConstruction, lang: str) -> Record:
     return rec
 
 
+def smallest_centre(sol, g, mu: float, C0: complex) -> complex | None:
+    """Where the smallest R0 read off the phase diagram puts the cam's centre, O_min (drawing mm, O at 0),
+    where the profile's R0 is over or under it (None where it is that one): a translating follower's on
+    O's line parallel to its axis, |O_min C₀| = R0_drawn (the legs √(R0² − e²) differ by the shift); a
+    rocking follower's on O's locus, the arc of radius a about the arm's pivot A, on O's side of AC₀."""
+    if not math.isfinite(g.R0_drawn) or abs(sol.geometry.R0 - g.R0_drawn) <= 1e-9:
+        return None
+    r = g.R0_drawn / mu
+    if not sol.cam.rocking:
+        e = sol.geometry.e
+        return 1j * (math.sqrt(sol.geometry.R0 ** 2 - e ** 2) - math.sqrt(g.R0_drawn ** 2 - e ** 2)) / mu
+    A = complex(sol.cam.centre_distance / mu)
+    d = abs(C0 - A)
+    w = (C0 - A) / d
+    x = (d * d + abs(A) ** 2 - r * r) / (2.0 * d)
+    if abs(x) > abs(A):
+        return None
+    side = 1.0 if ((0j - A) * w.conjugate()).imag >= 0 else -1.0
+    return A + w * complex(x, side * math.sqrt(abs(A) ** 2 - x * x))
+
+
+def _o_min_note(apart: float, lang: str) -> str:
+    """O_min within two dots of O: one note by O how far it lies (drawn mm), for the caption names both."""
+    x = f"{apart:.1f}"
+    if x == "0.0":
+        return "O = O_{min}"
+    return f"O_{{min}} за {x.replace('.', ',')} мм від O" if lang == "uk" else f"O_{{min}} {x} mm from O"
+
+
 def _chosen_R0(sol, g, lang: str) -> str:
     """The letter of |OC₀| on a translating follower's phase diagram: «R_0 = 39 мм», the radius taken,
     where it is over the smallest read off the diagram — O is then the centre chosen in the region, not
@@ -714,7 +760,8 @@ def _chosen_R0(sol, g, lang: str) -> str:
     return f"R_0 = {num(sol.geometry.R0 * 1000.0, lang, 3)} {'мм' if lang == 'uk' else 'mm'}"
 
 
-O_MIN_APART = 6.0    # mm: O_min marked only this far from O at least (a given R0 well over the smallest)
+O_MIN_APART = 6.0    # mm: O_min this far from O and more lettered freely, nearer: its letter nearer it than O (rivals)
+DOTS_APART = 2.0     # mm: O_min nearer O than this (the dots would touch) said in a note by O, not dotted
 LOCUS_MM = 20.0      # mm: a rocking follower's arc of O (radius a about the pivot) drawn either side of O
 ENDS_APART = 24.0    # mm: the two [ϑ] lines' ends at least this far apart (a letter is ~19 mm long)
 PAST_O = 24.0        # mm: each [ϑ] line drawn past O's foot on it (room for its hatching and letter)
@@ -743,30 +790,37 @@ HATCH_STEP, HATCH_LEN = 3.0, 2.5     # mm: the strokes along a boundary line, on
 HATCH_CLEAR = 6.0                    # mm: the first stroke past O (its letter, R0 and e stand there)
 
 
+CROSS_REACH = 60.0   # mm: two [ϑ] lines crossing at most this far past their ends drawn on to the crossing
+PAST_CROSS = 20.0    # mm: and this far past it (the wedge's two sides hatched beyond the corner)
+
+
+def _crossing(lines: list[tuple[complex, complex]]) -> tuple[float, float] | None:
+    """Where two lines (a point, a unit direction) cross: the distances along each from its point (None:
+    parallel)."""
+    (k0, d0), (k1, d1) = lines
+    den = (d0.conjugate() * d1).imag
+    if abs(den) <= 1e-9:
+        return None
+    return ((k1 - k0).conjugate() * d1).imag / den, ((k1 - k0).conjugate() * d0).imag / den
+
+
 def _hatch_region(rec: Record, bounds: list[tuple[complex, complex, complex]], O: complex) -> None:
     """The region of the cam's centre (where no drawn point is seen at more than [ϑ]) hatched along
     its two boundaries: short thin strokes at 45° on O's side of each [ϑ] line (``bounds``: its drawn
-    point K, its end and its direction), from HATCH_CLEAR past O to the line's end — the wedge O is
-    chosen in, below the lines' crossing; where they do not cross between their points and their ends,
-    each from HATCH_CLEAR past O's foot on it to its end — in either case only where the stroke
-    stands on O's side of the other line too (the region is the two half-planes' intersection)."""
+    point K, its end and its direction), from HATCH_CLEAR past O's foot on it to its end, only where the
+    stroke stands on O's side of the other line too (the region is the two half-planes' intersection):
+    the wedge O is chosen in — below the lines' crossing where O is, or, where O stands between the
+    curve and the crossing (CAM58's rocking arm), the line nearer O up to the crossing and the other
+    past it (stop 58 started each line's strokes past the crossing: the line bounding O's side had none
+    before it, the other none at all on the drawing)."""
     if len(bounds) != 2:
         return
-    (k0, e0, d0), (k1, e1, d1) = bounds
-    den = (d0.conjugate() * d1).imag
-    t0 = t1 = -1.0                                          # parallel: no crossing
-    if abs(den) > 1e-9:
-        t0 = ((k1 - k0).conjugate() * d1).imag / den       # k0 + t0·d0 = k1 + t1·d1
-        t1 = ((k1 - k0).conjugate() * d0).imag / den
-    cross = all(0.0 < t < abs(e - k) for k, e, t in ((k0, e0, t0), (k1, e1, t1)))
-    for j, (k, e, d, t) in enumerate(((k0, e0, d0, t0), (k1, e1, d1, t1))):
+    for j, (k, e, d) in enumerate(bounds):
         n = d * 1j if ((O - k) * d.conjugate()).imag > 0 else d * -1j     # toward O's side
         out = (n + d) / abs(n + d) * HATCH_LEN
-        # from past O (its letter and the e line stand by the crossing) to the line's end; where the
-        # lines do not cross on the drawing (a rocking follower's, one phase far from binding), each
-        # from past O's foot on it
+        # from past O (its letter, R0 and the e line stand there) to the line's end
         foot = ((O - k) * d.conjugate()).real
-        at = (max(t, foot) if cross else foot) + HATCH_CLEAR
+        at = foot + HATCH_CLEAR
         ok, oe, od = bounds[1 - j]
         inside = ((O - ok) * od.conjugate()).imag       # O's side of the other line
         while at <= abs(e - k) - 1.0:
@@ -1034,8 +1088,8 @@ def _follower(rec: Record, sol: Solution, g: CamConstruction, C0: complex, label
     foot = -3.0
     if SMALL_OFFSET > abs(x_axis) > 0.5:      # too short to letter between: dimensioned from outside
         foot = _small_offset(rec, x_axis, labels)
-    elif abs(x_axis) > 0.5:     # the offset line: from O across to the axis, e lettered
-        rec.segment((0.0, 0.0), (x_axis, 0.0), role="construction", layer=LAYER, step="offset e")
+    elif abs(x_axis) > 0.5:     # the offset dimensioned from O across to the axis, e lettered under it
+        _offset_dimension(rec, (0.0, 0.0), (x_axis, 0.0))
         labels.append(LabelRequest(complex(x_axis / 2, 0.0), "e", toward=-1j, size=TEXT))
     rec.segment((x_axis, foot), _pt(top + 4.0j), role="axis", layer=LAYER, step="follower axis")
     _stroke(rec, cam, C0, r, h, labels)
@@ -1044,6 +1098,25 @@ def _follower(rec: Record, sol: Solution, g: CamConstruction, C0: complex, label
 SMALL_OFFSET = 6.0    # mm drawn: an offset shorter than this is dimensioned with its arrows outside
 DIM_BELOW = -9.0      # mm: that dimension line this far under O — over it, by the follower's axis, where
                       # the fewest rays pass (under O the return's rays fan out: its letter went 6 mm off)
+
+
+def _offset_dimension(rec: Record, o: tuple[float, float], foot: tuple[float, float]) -> None:
+    """The offset e from O to its foot on the follower's axis (the s axis) as a dimension (GOST 2.307): the
+    line between them with its arrows inside, pointing out to O and to the axis — a segment lettered e
+    alone (stop 59's CAM59, e = 6 mm at 1:1) reads as one more construction line among the rays at O, not
+    as a size. Shorter than SMALL_OFFSET the two arrows would not stand inside: on the profile
+    ``_small_offset`` puts them outside, on the phase diagram (its e among no rays) the line alone."""
+    mid = (0.5 * (o[0] + foot[0]), 0.5 * (o[1] + foot[1]))
+    rec.segment(o, foot, role="construction", layer=LAYER, step="offset e")
+    if math.dist(o, foot) < SMALL_OFFSET:
+        return
+    d = math.dist(o, foot)
+    at_o = (o[0] + (foot[0] - o[0]) * O_DOT / d, o[1] + (foot[1] - o[1]) * O_DOT / d)   # at O's dot, not under it
+    for end in (at_o, foot):
+        rec.vector(mid, end, role="construction", layer=LAYER, step="offset e dimension")
+
+
+O_DOT = POINT_INK["dot"] + 0.05   # mm: the offset's arrow stops at the edge of O's dot (its tip showed under it)
 
 
 def _small_offset(rec: Record, x_axis: float, labels: list[LabelRequest]) -> float:

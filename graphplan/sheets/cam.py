@@ -26,6 +26,7 @@ WORDS = {
     "uk": {"subtitle": "Синтез кулачкового механізму", "diagrams": "Діаграми {a}, {v}, {s} (графічне "
            "інтегрування методом хорд)", "phase": "Фазова діаграма {s}({v}), найменший R_0",
            "phase_given": "Фазова діаграма {s}({v}), найменший і заданий R_0",
+           "phase_taken": "Фазова діаграма {s}({v}), найменший і прийнятий R_0",
            "profile": "Профіль кулачка (метод обернення руху)",
            "av": "Діаграми {a}, {v} (графічне інтегрування методом хорд)",
            "s": "Діаграма {s} (хорди паралельні променям з полюса P_2 діаграми {v})", "table": "Таблиця 1. Переміщення, аналог "
@@ -33,6 +34,7 @@ WORDS = {
     "en": {"subtitle": "Cam synthesis", "diagrams": "Diagrams {a}, {v}, {s} (graphical integration by "
            "chords)", "phase": "Phase diagram {s}({v}), smallest R_0",
            "phase_given": "Phase diagram {s}({v}), smallest and given R_0",
+           "phase_taken": "Phase diagram {s}({v}), smallest and taken R_0",
            "profile": "Cam profile (by inversion)",
            "av": "Diagrams {a}, {v} (graphical integration by chords)",
            "s": "Diagram {s} (its chords parallel to the rays from the pole P_2 of {v})", "table": "Table 1. Displacement, velocity analogue and "
@@ -124,7 +126,10 @@ def _captions(g, cam: Cam, lang: str) -> dict[str, tuple[str, str]]:
     q = symbols(cam.rocking)
     second = f"{scale_text('mu_phi', g.mu_phi, cam.rocking, lang)}; H_2 = {num_(g.H2)} {mm}"
     # a given R0: O is drawn at it, not at the smallest (review 57: the caption named the smallest alone)
-    phase_cap = w["phase_given" if cam.base_radius is not None else "phase"].format(**q)
+    # R0 taken over the smallest read (rounded up): O and O_min both drawn (review 59 #4: «найменший R₀» alone
+    # under O drawn at the taken 34 mm, O_min unlettered 3 mm above it)
+    taken = math.isfinite(g.R0_drawn) and abs(g.R0 - g.R0_drawn) > 1e-9
+    phase_cap = w["phase_given" if cam.base_radius is not None else "phase_taken" if taken else "phase"].format(**q)
     return {"diagrams": (w["diagrams"].format(**q), first), "phase": (phase_cap, phase),
             "profile": (w["profile"], profile), "av": (w["av"].format(**q), first), "s": (w["s"].format(**q), second)}
 

@@ -330,12 +330,27 @@ def note_block(lines: Sequence[str], width: float, title: str = "notes") -> Reco
     """Lines of notes wrapped to ``width`` mm, one under another (a continued line indented), each
     line's ink flush with the margin (its first glyph's side bearing taken off: review 10's «R₀ …»
     line stood 0.7 mm in, osifont's R)."""
-    rec = Record(title)
-    y = 0.0
-    for line in lines:
-        for k, part in enumerate(wrap_markup(line, width - 5.0, NOTE)):
-            rec.label(((5.0 if k else 0.0) - left_bearing(part, NOTE), y), part, size=NOTE, layer="labels", step="notes")
-            y -= NOTE_STEP
+    short = [0.0] * len(lines)
+    for _ in range(2):
+        rec = Record(title)
+        y = 0.0
+        ends = []
+        for j, line in enumerate(lines):
+            for k, part in enumerate(wrap_markup(line, width - 5.0 - short[j], NOTE)):
+                p = rec.label(((5.0 if k else 0.0) - left_bearing(part, NOTE), y), part, size=NOTE, layer="labels",
+                              step="notes")
+                b = p.bounds()
+                ends.append((j, b[2], b[2] - b[0]))
+                y -= NOTE_STEP
+        # a line whose first glyph's bearing is taken off stands left of the margin, and the block is placed by
+        # its box: a line filling its width then ran that much past the box's right edge (hypothesis, 150/150
+        # teeth, English A1: the notes 0.15 mm out of their column) — such lines wrapped again that much shorter
+        edge = (rec.bounds()[0] if rec.items else 0.0) + width
+        over = [(j, e - edge, w) for j, e, w in ends if e > edge + 1e-9]
+        if not over:
+            break
+        for j, d, w in over:              # its part no wider than it was less the overshoot
+            short[j] = max(short[j], width - 5.0 - (w - d) + 1e-6)
     return rec
 
 
