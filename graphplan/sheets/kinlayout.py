@@ -481,7 +481,11 @@ def finer_s(dr: Drafter, k) -> list[tuple[float, float, float]]:
 
 SHORTER = (0.9, 0.8, 0.7, 0.64)   # the diagrams' length factors an A1 tries for a larger position plan
 KEPT = 0.9        # … where every other plan keeps at least this share of its size
-GAIN = 2.0        # … and the position plan is drawn at least this many times as large
+GAIN = 1.25       # … and the position plan is drawn at least this many times as large: a standard step
+                  # (1:5 → 1:4, 1:2.5 → 1:2). Was 2.0 (one shorter length taken for any gain, the first
+                  # found; the largest is now taken): the blind review of stop 59's drag-link six-bar
+                  # kept 1:5 (crank 20 mm, its positions' labels piled on leaders) beside the
+                  # full-length diagrams, where L × 0.9 draws it at 1:4 (π a 90.1 → 85.1 mm)
 
 
 def main_larger(dr: Drafter, nat: Natural, f: Form, p: Plan, wide: bool = False, near: list | None = None
