@@ -481,11 +481,11 @@ def finer_s(dr: Drafter, k) -> list[tuple[float, float, float]]:
 
 SHORTER = (0.9, 0.8, 0.7, 0.64)   # the diagrams' length factors an A1 tries for a larger position plan
 KEPT = 0.9        # … where every other plan keeps at least this share of its size
-GAIN = 1.25       # … and the position plan is drawn at least this many times as large: a standard step
-                  # (1:5 → 1:4, 1:2.5 → 1:2). Was 2.0 (one shorter length taken for any gain, the first
-                  # found; the largest is now taken): the blind review of stop 59's drag-link six-bar
-                  # kept 1:5 (crank 20 mm, its positions' labels piled on leaders) beside the
-                  # full-length diagrams, where L × 0.9 draws it at 1:4 (π a 90.1 → 85.1 mm)
+GAIN = 2.0        # … and the position plan is drawn at least this many times as large
+STEP = 1.25       # … else, where no length does, a standard step larger (1:5 → 1:4, 1:2.5 → 1:2): the blind
+                  # review of stop 59's drag-link six-bar kept 1:5 (crank 20 mm, its positions' labels
+                  # piled on leaders) beside full-length diagrams, where L × 0.9 draws it at 1:4 (π a
+                  # 90.1 → 85.1 mm, p_v a 25 mm kept)
 
 
 def main_larger(dr: Drafter, nat: Natural, f: Form, p: Plan, wide: bool = False, near: list | None = None
@@ -493,33 +493,39 @@ def main_larger(dr: Drafter, nat: Natural, f: Form, p: Plan, wide: bool = False,
     """Where the sheet's main drawing, the position plan, is drawn with its crank under ``CRANK_MM``
     (LAYOUT.md: the largest drawing, μl by its zone): the diagrams drawn shorter (``SHORTER``, their
     height kept): of those whose composition draws the position plan at least ``GAIN`` times as
-    large and every other plan at least ``KEPT`` as large (or legible and no smaller against its
-    target than the position plan), the one drawing the position plan largest, then the longest
+    large (where none does, a standard ``STEP`` larger) and every other plan at least ``KEPT`` as
+    large (or legible and no smaller against its target than the position plan), the one drawing the position plan largest, then the longest
     (the first whose crank reaches ``CRANK_MM``) — the coulisse's 0.55 × 0.66 m plan sat at 1:10 (crank 9.3 mm, its
     letters 14–27 mm off their points) in the 77 mm the full-length diagrams left it; L × 0.7
     gives it 1:4 (p_v a 26.7 → 25.0 mm, π a 61.5 → 60.0 mm). None where no shorter length does."""
     if nat.drawn("position", p.mu["position"]) >= CRANK_MM - 1e-9:
         return None
     was = sizes_of(nat, p.mu, p.diagrams)[:len(FAMILIES)]
-    best: tuple[float, Plan] | None = None
-    for k in SHORTER:
-        got = one_sheet_at(dr, nat, f, (k, 1.0), wide=wide, near=near)
-        if got is None:
-            continue
-        now = sizes_of(nat, got[1].mu, got[1].diagrams)[:len(FAMILIES)]
-        main = nat.families["position"].rel(got[1].mu["position"])
+    gots: dict[float, tuple | None] = {}
+    for gain in (GAIN, STEP):
+        best: tuple[float, Plan] | None = None
+        for k in SHORTER:
+            if k not in gots:
+                gots[k] = one_sheet_at(dr, nat, f, (k, 1.0), wide=wide, near=near)
+            got = gots[k]
+            if got is None:
+                continue
+            now = sizes_of(nat, got[1].mu, got[1].diagrams)[:len(FAMILIES)]
+            main = nat.families["position"].rel(got[1].mu["position"])
 
-        def kept(fam: str, a: float, b: float) -> bool:
-            """A plan keeps ``KEPT`` of its size, or yields room to the main drawing while it still
-            reads and is drawn, against its target, no smaller than the position plan now is (the
-            coulisse's acceleration plans π a 82 → 55 mm for its position plan 1:10 → 1:4)."""
-            return a >= KEPT * b - 1e-9 or (legible(nat, got[1].mu) and a / nat.families[fam].target >= main - 1e-9)
-        if now[0] >= GAIN * was[0] - 1e-9 and all(kept(fam, a, b) for fam, a, b in zip(FAMILIES[1:], now[1:], was[1:])):
-            if best is None or now[0] > best[0] + 1e-9:
-                best = (now[0], got[1])
-            if now[0] >= CRANK_MM - 1e-9:
-                break
-    return best[1] if best else None
+            def kept(fam: str, a: float, b: float, got=got, main=main) -> bool:
+                """A plan keeps ``KEPT`` of its size, or yields room to the main drawing while it still
+                reads and is drawn, against its target, no smaller than the position plan now is (the
+                coulisse's acceleration plans π a 82 → 55 mm for its position plan 1:10 → 1:4)."""
+                return a >= KEPT * b - 1e-9 or (legible(nat, got[1].mu) and a / nat.families[fam].target >= main - 1e-9)
+            if now[0] >= gain * was[0] - 1e-9 and all(kept(fam, a, b) for fam, a, b in zip(FAMILIES[1:], now[1:], was[1:])):
+                if best is None or now[0] > best[0] + 1e-9:
+                    best = (now[0], got[1])
+                if now[0] >= CRANK_MM - 1e-9:
+                    break
+        if best is not None:
+            return best[1]
+    return None
 
 
 def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bool = False,
