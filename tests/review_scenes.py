@@ -8338,3 +8338,183 @@ rpm = 200
 direction = "ccw"
 divisions = 12
 '''
+
+
+
+# Stop 59 (the blind review's): its drag-link six-bar (uk) and Watt-II chain (en), whose A1 kinematics
+# sheets drew the position plan at 1:5 in a corner, the smallest drawing (finding 1; kin59b)
+DRAGLINK_REVIEW59 = '''
+# review59 (a): a six-bar quick-return drive of a ram: a double crank (drag-link) O1A-AB-O2B, the frame O1O2 the
+# shortest link, whose driven crank O2B carries (behind O2) the pin C of a rod CD to a slider D on a horizontal
+# guide through O2: I(0-1) -> II(2-3) ВВВ -> II(4-5) ВВП; crank CCW at 80 rpm; 1200 N on the slider's working stroke;
+# masses by length, the slider 8 kg; [dynamics] to a 750-rpm motor, δ = 0.05.
+title = "Шестиланковий механізм поперечно-стругального верстата з подвійним кривошипом"
+title_en = "Six-bar quick-return drive with a drag link"
+designation = "ТММ.КП.59.700"
+
+[sheet]
+student = "Рецензент Р. Р."
+teacher = "Викладач В. В."
+group = "МБ-59"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.06, 0.0]
+
+[frame.guides]
+x = { through = [0.06, 0.0], angle_deg = 0, title_uk = "повзуна", title_en = "of the ram" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.10
+rpm = 80
+direction = "ccw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.15
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.13
+shape = { C = [-0.12, 0.0] }
+points = { S3 = 0.0 }
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.40
+points = { S4 = 0.5 }
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "x"
+mass = 8
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [3, 8]
+force_phi_deg = 210
+output = "D"
+
+[loads]
+g = 9.81
+mass_per_length = 20
+inertia_factor = 0.1
+
+[[force]]
+point = "D"
+magnitude = 1200
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 750
+'''
+
+
+WATT_EN_REVIEW59 = '''
+# review59 (b): a Watt-II six-bar of a press-feed lever (lang en): the crank-rocker O1A-AB-O2B whose rocker is a bell
+# crank O2-B-C (C behind O2 on the bar's line) driving through the rod CD a second rocker O3D, which carries a 40 N·m resistance
+# moment over its working (slow) swing: I(0-1) -> II(2-3) RRR -> II(4-5) RRR; crank CLOCKWISE at 120 rpm;
+# masses by length; [dynamics] to a 1000-rpm motor, δ = 0.04.
+title = "Шестиланковий важільний механізм Ватта подавача"
+title_en = "Watt-II six-bar lever drive of a feeder"
+designation = "TMM.KP.59.800"
+lang = "en"
+
+[sheet]
+student = "Reviewer R. R."
+teacher = "Teacher T. T."
+group = "MB-59"
+organisation = "NULES of Ukraine"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.22, 0.0]
+O3 = [0.52, 0.10]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 120
+direction = "cw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.22
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.14
+shape = { C = [-0.10, 0.0] }
+points = { S3 = 0.5 }
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.25
+points = { S4 = 0.5 }
+
+[[link]]
+name = "O3D"
+number = 5
+joints = ["O3", "D"]
+length = 0.18
+points = { S5 = 0.5 }
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [2, 7]
+force_phi_deg = 150
+output = "O3D"
+
+[loads]
+g = 9.81
+mass_per_length = 25
+inertia_factor = 0.1
+
+[[moment]]
+link = "O3D"
+magnitude = 40
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+efficiency = 0.9
+synchronous_rpm = 1000
+'''

@@ -482,6 +482,11 @@ def finer_s(dr: Drafter, k) -> list[tuple[float, float, float]]:
 SHORTER = (0.9, 0.8, 0.7, 0.64)   # the diagrams' length factors an A1 tries for a larger position plan
 KEPT = 0.9        # … where every other plan keeps at least this share of its size
 GAIN = 2.0        # … and the position plan is drawn at least this many times as large
+STEP = 1.25       # … else, where no length does, a standard step larger (1:5 → 1:4, 1:2.5 → 1:2) with every
+                  # plan still legible (``plan_score``'s order: legible, then the main drawing): the blind
+                  # review of stop 59's Watt-II chain kept 1:5 (crank 12 mm, its twelve positions' labels
+                  # piled on leaders) beside full-length diagrams, where L × 0.8 draws it at 1:2 (p_v a
+                  # 40.1 mm kept, π a 55.1 → 45.1 mm, still legible; KEPT asked 49.6)
 
 
 def main_larger(dr: Drafter, nat: Natural, f: Form, p: Plan, wide: bool = False, near: list | None = None
@@ -490,32 +495,41 @@ def main_larger(dr: Drafter, nat: Natural, f: Form, p: Plan, wide: bool = False,
     (LAYOUT.md: the largest drawing, μl by its zone): the diagrams drawn shorter (``SHORTER``, their
     height kept): of those whose composition draws the position plan at least ``GAIN`` times as
     large and every other plan at least ``KEPT`` as large (or legible and no smaller against its
-    target than the position plan), the one drawing the position plan largest, then the longest
-    (the first whose crank reaches ``CRANK_MM``) — the coulisse's 0.55 × 0.66 m plan sat at 1:10 (crank 9.3 mm, its
+    target than the position plan) — where none does, a standard ``STEP`` larger, every plan
+    legible —, the one drawing the position plan largest, then the longest (the first whose crank
+    reaches ``CRANK_MM``) — the coulisse's 0.55 × 0.66 m plan sat at 1:10 (crank 9.3 mm, its
     letters 14–27 mm off their points) in the 77 mm the full-length diagrams left it; L × 0.7
     gives it 1:4 (p_v a 26.7 → 25.0 mm, π a 61.5 → 60.0 mm). None where no shorter length does."""
     if nat.drawn("position", p.mu["position"]) >= CRANK_MM - 1e-9:
         return None
     was = sizes_of(nat, p.mu, p.diagrams)[:len(FAMILIES)]
-    best: tuple[float, Plan] | None = None
-    for k in SHORTER:
-        got = one_sheet_at(dr, nat, f, (k, 1.0), wide=wide, near=near)
-        if got is None:
-            continue
-        now = sizes_of(nat, got[1].mu, got[1].diagrams)[:len(FAMILIES)]
-        main = nat.families["position"].rel(got[1].mu["position"])
+    gots: dict[float, tuple | None] = {}
+    for gain in (GAIN, STEP):
+        best: tuple[float, Plan] | None = None
+        for k in SHORTER:
+            if k not in gots:
+                gots[k] = one_sheet_at(dr, nat, f, (k, 1.0), wide=wide, near=near)
+            got = gots[k]
+            if got is None:
+                continue
+            now = sizes_of(nat, got[1].mu, got[1].diagrams)[:len(FAMILIES)]
+            main = nat.families["position"].rel(got[1].mu["position"])
 
-        def kept(fam: str, a: float, b: float) -> bool:
-            """A plan keeps ``KEPT`` of its size, or yields room to the main drawing while it still
-            reads and is drawn, against its target, no smaller than the position plan now is (the
-            coulisse's acceleration plans π a 82 → 55 mm for its position plan 1:10 → 1:4)."""
-            return a >= KEPT * b - 1e-9 or (legible(nat, got[1].mu) and a / nat.families[fam].target >= main - 1e-9)
-        if now[0] >= GAIN * was[0] - 1e-9 and all(kept(fam, a, b) for fam, a, b in zip(FAMILIES[1:], now[1:], was[1:])):
-            if best is None or now[0] > best[0] + 1e-9:
-                best = (now[0], got[1])
-            if now[0] >= CRANK_MM - 1e-9:
-                break
-    return best[1] if best else None
+            def kept(fam: str, a: float, b: float, got=got, main=main) -> bool:
+                """A plan keeps ``KEPT`` of its size, or yields room to the main drawing while it still
+                reads and is drawn, against its target, no smaller than the position plan now is (the
+                coulisse's acceleration plans π a 82 → 55 mm for its position plan 1:10 → 1:4)."""
+                if gain < GAIN:         # a step larger: the score's own order, legible first, then the main drawing
+                    return legible(nat, got[1].mu)
+                return a >= KEPT * b - 1e-9 or (legible(nat, got[1].mu) and a / nat.families[fam].target >= main - 1e-9)
+            if now[0] >= gain * was[0] - 1e-9 and all(kept(fam, a, b) for fam, a, b in zip(FAMILIES[1:], now[1:], was[1:])):
+                if best is None or now[0] > best[0] + 1e-9:
+                    best = (now[0], got[1])
+                if now[0] >= CRANK_MM - 1e-9:
+                    break
+        if best is not None:
+            return best[1]
+    return None
 
 
 def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bool = False,
