@@ -1787,6 +1787,26 @@ def _apart(rec: Record, asked: list[LabelRequest],
             rec.items.extend(kept)
             n = len(rec.items)
             rec.items.extend(again if better else first)
+        if i in owned and not _owns(rec.items[n:], owned[i][0], arrows):
+            # no spot by its own arrow the fences of the labels set before left (FRC56_PUSHER's
+            # II(4-5): "Φ5" set as any label 6.3 mm from its arrow, 2.2 mm from P_D's beside it):
+            # set again with only the drawing's lines and letters in the way, kept where it then
+            # stands nearer its own arrow than any other, led no worse and apart from the labels
+            first = rec.items[n:]
+            del rec.items[n:]
+            kept = [p for p in rec.items if p.step == _FENCE]
+            rec.items[:] = [p for p in rec.items if p.step != _FENCE]
+            m = len(rec.items)
+            put()
+            again = rec.items[m:]
+            del rec.items[m:]
+            better = (_owns(again, owned[i][0], arrows)
+                      and not (not across and _led_badly(again, rec.items, req.at,
+                                                         long=max(LONG_LEADER_MM, _leader_mm(first))))
+                      and _apart_from_labels(again, rec.items, req.size))
+            rec.items.extend(kept)
+            n = len(rec.items)
+            rec.items.extend(again if better else first)
         for p in rec.items[n:]:
             if p.kind != "text":
                 continue
@@ -1801,6 +1821,18 @@ def _apart(rec: Record, asked: list[LabelRequest],
 
 
 LONG_LEADER_MM = 12.0   # a label's leader longer than this is set again without the fences
+
+
+def _owns(items: list, mine: tuple[complex, complex], arrows: list[tuple[complex, complex]]) -> bool:
+    """Whether the force's letter among ``items`` stands nearer its own arrow ``mine`` than any other
+    of the ``arrows`` (its ink's box to each segment; True where none is set or no other is near)."""
+    from graphplan.drawing.labels import box_to_segment
+    texts = [p for p in items if p.kind == "text"]
+    if not texts:
+        return True
+    box = texts[0].ink()
+    d = box_to_segment(box, *mine)
+    return all(box_to_segment(box, *o) > d for o in arrows if o is not mine and o != mine)
 
 
 def _long_leaders(items: list, long: float = LONG_LEADER_MM) -> float:

@@ -1104,10 +1104,13 @@ def place_owned_line(record: Record, alternatives: list[LabelRequest], mine: tup
     ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
     size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
     def led(box, clear: float = LEADER_CLEAR) -> bool:
-        """On a leader from its head: the box clear of the other arrows, the leader across none and
-        ``clear`` of them (0: touching is allowed)."""
+        """On a leader from its head: the box clear of the other arrows — and nearer its own than any
+        of them (FRC56_PUSHER's "Φ5" 6.3 mm from its arrow, 2.2 mm from P_D's) —, the leader across
+        none and ``clear`` of them (0: touching is allowed)."""
         a, b = _leader(req.at, box)
-        return ((owns_line(box, mine, near) or all(box_to_segment(box, *o) >= LED_CLEAR for o in near))
+        d = box_to_segment(box, *mine)
+        return ((owns_line(box, mine, near)
+                 or all(box_to_segment(box, *o) >= max(LED_CLEAR, d + OWN_LINE_MM) for o in near))
                 and not any(_segments_cross(a, b, *o) for o in near)
                 and all(segment_gap(a, b, *o) >= clear for o in near))
     local = ob.near(req.at, FAR[-1] + size)
