@@ -8518,3 +8518,93 @@ delta = 0.04
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+# frc59c: review 59's Watt-II six-bar (lang en; the reviewer's b_watt_en.toml): its A1 force sheet drew group II(2-3)'s
+# plan at 1.5 N/mm, the hodographs of R12, R01 at 7.5 and M_b by the force plans −15 % (review 59 #2)
+FRC59C_WATT_EN = '''
+# review59 (b): a Watt-II six-bar of a press-feed lever (lang en): the crank-rocker O1A-AB-O2B whose rocker is a bell
+# crank O2-B-C (C behind O2 on the bar's line) driving through the rod CD a second rocker O3D, which carries a 40 N·m resistance
+# moment over its working (slow) swing: I(0-1) -> II(2-3) RRR -> II(4-5) RRR; crank CLOCKWISE at 120 rpm;
+# masses by length; [dynamics] to a 1000-rpm motor, δ = 0.04.
+title = "Шестиланковий важільний механізм Ватта подавача"
+title_en = "Watt-II six-bar lever drive of a feeder"
+designation = "TMM.KP.59.800"
+lang = "en"
+
+[sheet]
+student = "Reviewer R. R."
+teacher = "Teacher T. T."
+group = "MB-59"
+organisation = "NULES of Ukraine"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.22, 0.0]
+O3 = [0.52, 0.10]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 120
+direction = "cw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.22
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.14
+shape = { C = [-0.10, 0.0] }
+points = { S3 = 0.5 }
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.25
+points = { S4 = 0.5 }
+
+[[link]]
+name = "O3D"
+number = 5
+joints = ["O3", "D"]
+length = 0.18
+points = { S5 = 0.5 }
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [2, 7]
+force_phi_deg = 150
+output = "O3D"
+
+[loads]
+g = 9.81
+mass_per_length = 25
+inertia_factor = 0.1
+
+[[moment]]
+link = "O3D"
+magnitude = 40
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+efficiency = 0.9
+synchronous_rpm = 1000
+'''

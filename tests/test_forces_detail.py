@@ -11,8 +11,8 @@ import pytest
 from conftest import scene_study
 from review_scenes import SIXBAR
 
-# the series the program's scales take: 1, 1.5, 2, 2.5, 4, 5, 7.5 × 10^k (written out here)
-SERIES = sorted(m * 10.0 ** k for m in (1.0, 1.5, 2.0, 2.5, 4.0, 5.0, 7.5) for k in range(-3, 5))
+# the standard series every μF takes (LAYOUT.md; review 59 #2: no GOST 1.5, 7.5): 1, 2, 2.5, 4, 5 × 10^k
+SERIES = sorted(m * 10.0 ** k for m in (1.0, 2.0, 2.5, 4.0, 5.0) for k in range(-3, 5))
 
 
 def test_the_detail_scale_is_the_largest_series_value_that_draws_the_shortest_side_long_enough():

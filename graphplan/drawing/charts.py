@@ -357,12 +357,13 @@ HODOGRAPH_MM = 60.0    # a hodograph's larger extent (its curve with the origin)
 
 def hodograph_scale(span: float, size: float) -> float:
     """μR (N/mm) that draws a hodograph's larger extent ``span`` (N) at most ``size`` mm: the
-    smallest value of the series the program's other scales take (1, 1.5, 2, 2.5, 4, 5, 7.5 × 10^k,
-    graphic.scales) that does — 270 and 260 N/mm on the press's sheet were no scale a draftsman
-    sets (now 150 and 250; the curve at least 1/1.6 of the size)."""
+    smallest value of the standard series 1, 2, 2.5, 4, 5 × 10^k (LAYOUT.md: every μF of the force
+    sheet; the force plans' too) that does — 270 and 260 N/mm on the press's sheet were no scale a
+    draftsman sets (now 400 and 400; the curve at least half the size), review 59 #2's 7.5 N/mm none
+    of the series."""
     need = span / size
     k0 = math.floor(math.log10(need))
-    return min(m for m in (series_value(v, k) for k in (k0, k0 + 1) for v in SERIES + GOST_BETWEEN)
+    return min(m for m in (series_value(v, k) for k in (k0, k0 + 1) for v in SERIES)
                if m >= need * (1 - 1e-12))
 
 
@@ -394,7 +395,7 @@ DETAIL_APART = 3.0     # mm: the nearest two points a detail tells apart drawn a
 def _series_below(x: float) -> float:
     """The largest value of the series (``hodograph_scale``'s) not above ``x``."""
     k0 = math.floor(math.log10(x))
-    return max(m for m in (series_value(v, k) for k in (k0 - 1, k0) for v in SERIES + GOST_BETWEEN)
+    return max(m for m in (series_value(v, k) for k in (k0 - 1, k0) for v in SERIES)
                if m <= x * (1 + 1e-12))
 
 

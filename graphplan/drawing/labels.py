@@ -1103,15 +1103,22 @@ def place_owned_line(record: Record, alternatives: list[LabelRequest], mine: tup
     req = alternatives[0]
     ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
     size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
-    def led(box, clear: float = LEADER_CLEAR) -> bool:
-        """On a leader from its head: the box clear of the other arrows, the leader across none and
-        ``clear`` of them (0: touching is allowed)."""
+    def led(box, clear: float = LEADER_CLEAR, nearer: bool = True) -> bool:
+        """On a leader from its head: the box clear of the other arrows — ``nearer``: and nearer its
+        own than any of them (FRC56_PUSHER's "R43" on a leader 11.8 mm from its arrow, 8.3 mm from
+        G2's) —, the leader across none and ``clear`` of them (0: touching is allowed)."""
         a, b = _leader(req.at, box)
-        return ((owns_line(box, mine, near) or all(box_to_segment(box, *o) >= LED_CLEAR for o in near))
+        d = box_to_segment(box, *mine) + OWN_LINE_MM if nearer else 0.0
+        return ((owns_line(box, mine, near)
+                 or all(box_to_segment(box, *o) >= max(LED_CLEAR, d) for o in near))
                 and not any(_segments_cross(a, b, *o) for o in near)
                 and all(segment_gap(a, b, *o) >= clear for o in near))
     local = ob.near(req.at, FAR[-1] + size)
-    spot = _far(local, req, ink, led) or _far(local, req, ink, lambda box: led(box, 0.0))
+    # the box nearer its own arrow first; else (a knot of parallel arrows, where no box is) the leader
+    # alone names it: its end on its own arrow, the box 2 mm clear of the others
+    spot = (_far(local, req, ink, led) or _far(local, req, ink, lambda box: led(box, 0.0))
+            or _far(local, req, ink, lambda box: led(box, nearer=False))
+            or _far(local, req, ink, lambda box: led(box, 0.0, nearer=False)))
     if spot is None:
         return place_labels(record, [req], layer)
     box, start, (a, b) = spot

@@ -1607,8 +1607,10 @@ def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
             for fam, i in sorted(growing, key=lambda s: fams[s[0]].rel(mu.get(key_of(*s), mu[s[0]]))):
                 key = key_of(fam, i)
                 base = mu.get(key, mu[fam])
+                # a force plan's μF and the acceleration plan's μa by the standard series on one
+                # sheet too (review 59 #2: the A1 sheet's II(2-3) plan at 1.5 N/mm, μa 0.075)
                 nxt = fams[fam].finer(base) if fams[fam].factors else (
-                    next_length(base) if fam in ("scheme", "groups") else next_round(base) if one else next_series(base))
+                    next_length(base) if fam in ("scheme", "groups") else next_series(base))
                 # the scheme never larger than the groups cut from it where it would take much
                 # of its sheet (review 6 #4, ``_scheme_aside``)
                 if nxt is None or fams[fam].rel(nxt) > FILL_LARGEST[fam] + 1e-9 \

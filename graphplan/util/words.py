@@ -771,6 +771,12 @@ WORDS: dict[str, tuple[str, str]] = {
                      "{h} = {mm} mm: {r} acts {m} m from {p} along the guide (exact {e} m, δ = {d} %), "
                      "from ΣM_{p} = 0 of link {n} of group {g}"),
     "fs why arms": ("{sym}: плечі, прочитані лінійкою до {p} мм", "{sym}: arms read with a {p} mm ruler"),
+    "fs why carried": ("{sym}: {r} = {f} Н (точно {fe}) з плану групи {g} (R^τ — з плечей, прочитаних при μ_l = {ml} м/мм), "
+                       "її лінія відхилена на {da}°: плече {h} мм (точно {he}), момент {m} Н·м (точно {me}); решта "
+                       "моментів кривошипа ({rest} Н·м) віднімається від нього — відносна похибка результату у {k} раза більша",
+                       "{sym}: {r} = {f} N (exact {fe}) from group {g}'s plan (R^τ by arms read at μ_l = {ml} m/mm), "
+                       "its line {da}° off: arm {h} mm (exact {he}), moment {m} N·m (exact {me}); the crank's other "
+                       "moments ({rest} N·m) cancel against it — the result's relative error {k} times that moment's"),
     "fs idle": ("холостий хід", "idle stroke"),
     "fs working": ("робочий хід", "working stroke"),
     "fs path": ("шлях {s} від положення 0, {u}", "path of {s} from position 0, {u}"),
