@@ -111,17 +111,3 @@ def test_the_two_slider_pumps_plunger_against_its_closed_form():
         positions = [type("P", (), {"acceleration": object()})()]
     uk, = other_outputs(st, Plans, "uk")
     assert "v_{D}, a_{D}" in uk
-
-
-@pytest.mark.parametrize("size", [3.5, 4.747])
-@pytest.mark.parametrize("letter", list("stdl"))
-def test_the_letter_after_an_english_apostrophe_stands_clear_of_it(size, letter):
-    """Tucked under the apostrophe as after the Ukrainian one, «s» began 0.03 em across from its ink and
-    the apostrophe, itself tucked over k's arm, read as an accent on the s («crankś», stop 59): the letter's
-    ink begins at least 0.12 em right of the apostrophe's, as set (the font's boxes, the kern)."""
-    from graphplan.graphic.record import _metrics, em, kern
-    m = _metrics()
-    ap, b = m["boxes"]["'"], m["boxes"][letter]
-    e = em(size)
-    ink_gap = m["advance"]["'"] * e + kern("'", letter, size) + b[0] * e - ap[2] * e
-    assert ink_gap >= 0.12 * e

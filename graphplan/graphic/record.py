@@ -386,8 +386,6 @@ def kern(prev: str, c: str, size: float) -> float:
     # an ASCII ' after a letter is tucked only over b, h, k's open right (the lab's, the crank's): after
     # another letter it may be a prime (z'_2, whose index stands under it as z₂'s, review 48) — set as before
     prime = c == "'" and prev not in OPEN_RIGHT
-    if prev == "'" and c.isalpha():
-        return _after_english_apostrophe(c, size)
     if (prev in APOSTROPHES or c in APOSTROPHES) and prev.isalpha() != c.isalpha() and not prime:
         return _apostrophe_kern(prev, c, size)
     if prev in SIGNS or c in SIGNS:
@@ -427,21 +425,6 @@ OPEN_RIGHT = "bhk"  # ascenders whose ink right of the stem ends at the x-height
 OPEN_TUCK = 0.08    # ems: over such a letter the apostrophe's ink begins this far inside its box's right: b's
 #  bowl curves away from its box's corner under it (tucked only to APOSTROPHE_GAP, «lab's» at 4.7-mm letters
 #  still split at 3 of 9 placings on the 4-px/mm grid; at 0.07 em and more at none, its ink still apart)
-
-
-AFTER_APOSTROPHE = 0.16   # ems: a letter after an English apostrophe (ASCII ') stands this far across from
-#  its box. Tucked to APOSTROPHE_GAP as after the Ukrainian one, the apostrophe — itself tucked over k's or
-#  b's open right — hung over the letter's shoulder: «crank's», «lab's» read «crankś», «labś» (stop 59); at
-#  the font's advance (0.21 em) the letter stood apart, a word of its own at 4.7-mm letters
-
-
-def _after_english_apostrophe(c: str, size: float) -> float:
-    """``kern`` of a letter after an English apostrophe: the boxes ``AFTER_APOSTROPHE`` apart across."""
-    m = _metrics()
-    a, b = m["boxes"].get("'"), m["boxes"].get(c)
-    if a is None or b is None:
-        return 0.0
-    return (AFTER_APOSTROPHE - (m["advance"]["'"] - a[2] + b[0])) * em(size)
 
 
 def _apostrophe_kern(prev: str, c: str, size: float) -> float:
