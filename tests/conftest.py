@@ -559,3 +559,27 @@ def served():
     yield f"http://127.0.0.1:{port}"
     proc.terminate()
     proc.wait(10)
+
+
+@pytest.fixture(scope="session")
+def web_client():
+    """The web app (one worker in its pool, a job's bound 600 s, host "testserver") in starlette's test
+    client, one per xdist worker for test_serve56, test_web57, test_web58 and test_messages54: each module
+    started an app of its own, and its pool a worker process importing graphplan (≈ 1 s of CPU each).
+    test_serve keeps its own app (two workers; it checks the pool's folders outlive no app)."""
+    pytest.importorskip("starlette")
+    pytest.importorskip("multipart")
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        from starlette.testclient import TestClient
+    from graphplan.web.app import Config, create_app
+    with TestClient(create_app(Config(workers=1, timeout=600, allowed_hosts=["testserver"]))) as c:
+        yield c
+
+
+@pytest.fixture
+def web(web_client):
+    """``web_client`` with no cookie an earlier test left."""
+    web_client.cookies.clear()
+    return web_client

@@ -6,7 +6,6 @@ from __future__ import annotations
 import json
 import os
 import re
-import warnings
 from pathlib import Path
 from urllib.parse import unquote
 
@@ -18,21 +17,15 @@ from test_serve_browser import downloads, driver, server  # noqa: F401  (the wor
 
 pytest.importorskip("starlette")
 pytest.importorskip("multipart")
-with warnings.catch_warnings():
-    warnings.simplefilter("ignore")
-    from starlette.testclient import TestClient
-
-from graphplan.web.app import Config, create_app  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 FOUR_BAR = re.sub(r"\[branch\]\n(.+\n)+", "", (ROOT / "examples" / "four_bar.toml").read_text(encoding="utf-8"))
 
 
-@pytest.fixture(scope="module")
-def client():
-    app = create_app(Config(workers=1, timeout=600, allowed_hosts=["testserver"]))
-    with TestClient(app) as c:
-        yield c
+@pytest.fixture
+def client(web):
+    """The worker's web app in the test client (conftest's ``web_client``, one for the worker)."""
+    return web
 
 
 def _captions(svg: bytes) -> list[str]:
