@@ -485,3 +485,103 @@ def crank_slider_keys(tmp_path_factory):
     assert code == 0, err
     return folder / "keys"
 
+
+
+# -- one Chromium per worker (stop 59, speed59b) -----------------------------------------------------------
+# Each browser module (test_view, test_view_tutor, test_serve_browser, test_serve_browser55, test_serve56)
+# launched its own Chromium and chromedriver (≈ 3.5 s of CPU a launch, more under xdist's worksteal, which
+# hands a module's tests to both workers): one browser now serves every module of the worker, and each
+# test starts clean (``browser_tab``): the module's window size, the cookies, the cache and the logs of
+# earlier tests gone, no emulated device left over.
+CHROMIUM = "/usr/bin/chromium"
+CHROMEDRIVER = "/usr/bin/chromedriver"
+_BROWSER = {"launches": 0}
+
+
+@pytest.fixture(scope="session")
+def chromium():
+    """The worker's one headless Chromium (started at the first test that needs it, quit at the end).
+    The callers check first that chromium, its driver and selenium are there (they skip, or fail in CI)."""
+    import shutil
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+    opts = webdriver.ChromeOptions()
+    opts.binary_location = CHROMIUM if os.path.exists(CHROMIUM) else shutil.which("chromium")
+    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                "--window-size=1400,1800", "--no-first-run", "--disable-extensions",
+                "--disable-background-networking", "--disable-component-update"):
+        opts.add_argument(arg)
+    opts.add_experimental_option("prefs", {"download.prompt_for_download": False})
+    opts.set_capability("goog:loggingPrefs", {"browser": "ALL", "performance": "ALL"})
+    d = webdriver.Chrome(options=opts, service=Service(
+        CHROMEDRIVER if os.path.exists(CHROMEDRIVER) else shutil.which("chromedriver")))
+    _BROWSER["launches"] += 1
+    if CPU_LOG:
+        with open(CPU_LOG, "a", encoding="utf-8") as out:
+            out.write(f"chromium\tlaunch\t{_BROWSER['launches']}\t{os.getpid()}\n")
+    yield d
+    d.quit()
+
+
+def browser_tab(d, width: int, height: int, downloads: Path | None = None):
+    """``d`` (the worker's browser) for a new test at ``width`` × ``height``: what an earlier test left
+    (a window it opened, cookies, the cache, console and network logs, an emulated phone) is gone; no
+    page of the program keeps web storage (none in graphplan/). Every test opens its own page first: a
+    new tab a test (a blank page) passed them all (speed59b), but cost a renderer process each — 0.4 s of
+    CPU, an about:blank between tests 0.08 s, a launch 1 s (speed59b-scratch/launch*.py)."""
+    for handle in d.window_handles[1:]:        # a test that opened a window of its own
+        d.switch_to.window(handle)
+        d.close()
+    d.switch_to.window(d.window_handles[0])
+    d.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})
+    d.set_window_size(width, height)
+    d.execute_cdp_cmd("Network.clearBrowserCookies", {})
+    d.execute_cdp_cmd("Network.clearBrowserCache", {})
+    d.execute_cdp_cmd("Browser.setDownloadBehavior", {"behavior": "allow" if downloads else "default",
+                                                      **({"downloadPath": str(downloads)} if downloads else {})})
+    d.get_log("browser")
+    d.get_log("performance")
+    return d
+
+
+@pytest.fixture(scope="session")
+def served():
+    """The worker's one real ``graphplan serve`` (a process, as a student starts it) for the browser tests
+    of test_serve_browser, test_serve_browser55 and test_serve56 — it was one a module, each with its pool
+    of two workers importing graphplan. Without chromium, its driver, selenium or pdftotext: skipped (CI:
+    failed)."""
+    import test_serve_browser as B
+    reason = B._browser_missing()
+    if reason:
+        if os.environ.get("CI"):
+            pytest.fail(f"browser tests cannot run in CI: {reason}")
+        pytest.skip(reason)
+    port = B.free_port()
+    proc = B.start_server(port)
+    yield f"http://127.0.0.1:{port}"
+    proc.terminate()
+    proc.wait(10)
+
+
+@pytest.fixture(scope="session")
+def web_client():
+    """The web app (one worker in its pool, a job's bound 600 s, host "testserver") in starlette's test
+    client, one per xdist worker for test_serve56, test_web57, test_web58 and test_messages54: each module
+    started an app of its own, and its pool a worker process importing graphplan (≈ 1 s of CPU each).
+    test_serve keeps its own app (two workers; it checks the pool's folders outlive no app)."""
+    pytest.importorskip("starlette")
+    pytest.importorskip("multipart")
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        from starlette.testclient import TestClient
+    from graphplan.web.app import Config, create_app
+    with TestClient(create_app(Config(workers=1, timeout=600, allowed_hosts=["testserver"]))) as c:
+        yield c
+
+
+@pytest.fixture
+def web(web_client):
+    """``web_client`` with no cookie an earlier test left."""
+    web_client.cookies.clear()
+    return web_client

@@ -181,16 +181,10 @@ starlette = pytest.importorskip("starlette")
 pytest.importorskip("multipart")
 
 
-@pytest.fixture(scope="module")
-def client():
-    import warnings
-    from graphplan.web.app import Config, create_app
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        from starlette.testclient import TestClient
-    app = create_app(Config(workers=1, timeout=120, allowed_hosts=["testserver"]))
-    with TestClient(app) as c:
-        yield c
+@pytest.fixture
+def client(web):
+    """The worker's web app in the test client (conftest's ``web_client``, one for the worker)."""
+    return web
 
 
 def refusal(r, status: int = 422) -> str:

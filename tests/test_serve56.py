@@ -6,7 +6,6 @@ from __future__ import annotations
 import json
 import os
 import re
-import warnings
 from pathlib import Path
 from urllib.parse import unquote
 
@@ -14,24 +13,19 @@ import numpy as np
 import pytest
 
 from review_scenes import MISC56
+from test_serve_browser import downloads, driver, server  # noqa: F401  (the worker's browser and server)
 
 pytest.importorskip("starlette")
 pytest.importorskip("multipart")
-with warnings.catch_warnings():
-    warnings.simplefilter("ignore")
-    from starlette.testclient import TestClient
-
-from graphplan.web.app import Config, create_app  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 FOUR_BAR = re.sub(r"\[branch\]\n(.+\n)+", "", (ROOT / "examples" / "four_bar.toml").read_text(encoding="utf-8"))
 
 
-@pytest.fixture(scope="module")
-def client():
-    app = create_app(Config(workers=1, timeout=600, allowed_hosts=["testserver"]))
-    with TestClient(app) as c:
-        yield c
+@pytest.fixture
+def client(web):
+    """The worker's web app in the test client (conftest's ``web_client``, one for the worker)."""
+    return web
 
 
 def _captions(svg: bytes) -> list[str]:
@@ -67,53 +61,34 @@ def test_an_assembly_that_does_not_assemble_is_nobody_s_default(client):
 
 
 @pytest.mark.skipif(not Path("/usr/bin/chromium").exists() and not os.environ.get("CI"), reason="chromium is missing")
-def test_the_page_says_which_assembly_the_sheets_take_in_both_languages(tmp_path):
+def test_the_page_says_which_assembly_the_sheets_take_in_both_languages(driver, server, tmp_path):
     from selenium.webdriver.common.by import By
     from selenium.webdriver.support.ui import Select
 
     import test_serve_browser as B
-    reason = B._browser_missing()
-    if reason:
-        if os.environ.get("CI"):
-            pytest.fail(f"browser tests cannot run in CI: {reason}")
-        pytest.skip(reason)
     scene = tmp_path / "six_bar56.toml"
     scene.write_text(MISC56, encoding="utf-8")
-    proc = B.start_server(B.free_port())
-    port = proc.args[proc.args.index("--port") + 1]
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
-    opts = webdriver.ChromeOptions()
-    opts.binary_location = B.CHROMIUM
-    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--window-size=1300,1000"):
-        opts.add_argument(arg)
-    opts.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    d = webdriver.Chrome(options=opts, service=Service(B.DRIVER))
-    try:
-        d.get(f"http://127.0.0.1:{port}/?lang=uk")
-        B.wait(d, lambda: B.preview_src(d), 90, what="the first preview")
-        before = B.preview_src(d)
-        d.find_element(By.ID, "upload").send_keys(str(scene))
-        B.wait(d, lambda: (s := B.preview_src(d)) and s != before, 120, what="the six-bar's preview")
-        B.settled(d)
-        said = lambda: d.find_element(By.ID, "branch-said").text      # noqa: E731
-        B.wait(d, lambda: "типове складання 1 ([branch] B = +1)" in said(), what="the default said")
-        labels = [b.get_attribute("aria-label") for b in d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly")]
-        assert labels[0].endswith("(типове)") and "типове" not in labels[1]
-        Select(d.find_element(By.ID, "lang")).select_by_value("en")
-        B.wait(d, lambda: "the default, assembly 1 ([branch] B = +1)" in said(), what="said in English")
-        assert not re.search("[а-яєіїґ]", said())
-        d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly")[1].click()
-        B.wait(d, lambda: said().startswith("Assembly chosen: [branch] B = −1"), 120, what="the choice said")
-        assert d.find_element(By.ID, "dl-view").is_displayed()
-        before = B.preview_src(d)
-        d.find_element(By.ID, "upload").send_keys(str(ROOT / "examples" / "gears.toml"))
-        B.wait(d, lambda: (s := B.preview_src(d)) and s != before, 120, what="the gears' preview")
-        B.settled(d)
-        # the explorer shows lever mechanisms and cams: no button that only answers with a refusal
-        assert not d.find_element(By.ID, "dl-view").is_displayed()
-        assert B.console_errors(d) == []
-    finally:
-        d.quit()
-        proc.terminate()
-        proc.wait(10)
+    d = driver                  # the worker's browser on a clean tab, the worker's server (test_serve_browser)
+    d.get(f"{server}/?lang=uk")
+    B.wait(d, lambda: B.preview_src(d), 90, what="the first preview")
+    before = B.preview_src(d)
+    d.find_element(By.ID, "upload").send_keys(str(scene))
+    B.wait(d, lambda: (s := B.preview_src(d)) and s != before, 120, what="the six-bar's preview")
+    B.settled(d)
+    said = lambda: d.find_element(By.ID, "branch-said").text      # noqa: E731
+    B.wait(d, lambda: "типове складання 1 ([branch] B = +1)" in said(), what="the default said")
+    labels = [b.get_attribute("aria-label") for b in d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly")]
+    assert labels[0].endswith("(типове)") and "типове" not in labels[1]
+    Select(d.find_element(By.ID, "lang")).select_by_value("en")
+    B.wait(d, lambda: "the default, assembly 1 ([branch] B = +1)" in said(), what="said in English")
+    assert not re.search("[а-яєіїґ]", said())
+    d.find_elements(By.CSS_SELECTOR, "#assemblies .assembly")[1].click()
+    B.wait(d, lambda: said().startswith("Assembly chosen: [branch] B = −1"), 120, what="the choice said")
+    assert d.find_element(By.ID, "dl-view").is_displayed()
+    before = B.preview_src(d)
+    d.find_element(By.ID, "upload").send_keys(str(ROOT / "examples" / "gears.toml"))
+    B.wait(d, lambda: (s := B.preview_src(d)) and s != before, 120, what="the gears' preview")
+    B.settled(d)
+    # the explorer shows lever mechanisms and cams: no button that only answers with a refusal
+    assert not d.find_element(By.ID, "dl-view").is_displayed()
+    assert B.console_errors(d) == []

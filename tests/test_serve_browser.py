@@ -65,42 +65,23 @@ def start_server(port: int) -> subprocess.Popen:
     raise RuntimeError("the server did not start in 30 s")
 
 
-@pytest.fixture(scope="module")
-def server():
-    reason = _browser_missing()
-    if reason:
-        if os.environ.get("CI"):
-            pytest.fail(f"browser tests cannot run in CI: {reason}")
-        pytest.skip(reason)
-    port = free_port()
-    proc = start_server(port)
-    yield f"http://127.0.0.1:{port}"
-    proc.terminate()
-    proc.wait(10)
+@pytest.fixture
+def server(served):
+    """The worker's one ``graphplan serve`` (conftest's ``served``, started at its first browser test)."""
+    return served
 
 
-@pytest.fixture(scope="module")
+@pytest.fixture
 def downloads(tmp_path_factory):
     return tmp_path_factory.mktemp("downloads")
 
 
-@pytest.fixture(scope="module")
-def driver(server, downloads):
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
-    opts = webdriver.ChromeOptions()
-    opts.binary_location = CHROMIUM if os.path.exists(CHROMIUM) else shutil.which("chromium")
-    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                "--window-size=1300,1000", "--no-first-run", "--disable-extensions",
-                "--disable-background-networking", "--disable-component-update"):
-        opts.add_argument(arg)
-    opts.add_experimental_option("prefs", {"download.default_directory": str(downloads),
-                                           "download.prompt_for_download": False})
-    opts.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    d = webdriver.Chrome(options=opts, service=Service(DRIVER if os.path.exists(DRIVER) else shutil.which("chromedriver")))
-    d.execute_cdp_cmd("Browser.setDownloadBehavior", {"behavior": "allow", "downloadPath": str(downloads)})
-    yield d
-    d.quit()
+@pytest.fixture
+def driver(server, downloads, chromium):
+    """The worker's one Chromium (conftest's ``chromium``) on a clean tab of 1300 × 1000 for each test,
+    its downloads going to the test's own folder."""
+    from conftest import browser_tab
+    return browser_tab(chromium, 1300, 1000, downloads)
 
 
 def shot(d, tmp_path: Path, name: str) -> Path:

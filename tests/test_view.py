@@ -244,25 +244,16 @@ def _browser_missing() -> str | None:
     return None
 
 
-@pytest.fixture(scope="module")
-def driver():
+@pytest.fixture
+def driver(request):
+    """The worker's one Chromium (conftest's ``chromium``) on a clean tab of 1400 × 1800 for each test."""
     reason = _browser_missing()
     if reason:
         if os.environ.get("CI"):
             pytest.fail(f"browser tests cannot run in CI: {reason}")
         pytest.skip(reason)
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
-    opts = webdriver.ChromeOptions()
-    opts.binary_location = CHROMIUM if os.path.exists(CHROMIUM) else shutil.which("chromium")
-    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                "--window-size=1400,1800", "--no-first-run", "--disable-extensions",
-                "--disable-background-networking", "--disable-component-update"):
-        opts.add_argument(arg)
-    opts.set_capability("goog:loggingPrefs", {"browser": "ALL", "performance": "ALL"})
-    d = webdriver.Chrome(options=opts, service=Service(DRIVER if os.path.exists(DRIVER) else shutil.which("chromedriver")))
-    yield d
-    d.quit()
+    from conftest import browser_tab
+    return browser_tab(request.getfixturevalue("chromium"), 1400, 1800)
 
 
 @pytest.fixture

@@ -17,6 +17,8 @@ from pathlib import Path
 
 import pytest
 
+from conftest import cli
+from fuzz_scenes import run
 from test_view import ROOT, SHAPER, check_clean, driver, graphplan, open_page, page_data  # noqa: F401
 
 SIZES = [(390, 844), (1366, 768), (1920, 1080)]
@@ -310,9 +312,10 @@ def walk_the_lessons(d, scene: Path, tmp: Path) -> int:
     from graphplan.exact.positions import study
     from graphplan.model.scene import load
     page = tmp / (scene.stem + ".html")
-    r = graphplan("view", str(scene), "-o", str(page), "--lang", "en", "--step", "10")
-    assert r.returncode == 0, r.stderr
-    planned = json.loads(graphplan("plans", str(scene), "--json").stdout)     # at the A1 sheet's scales
+    # the page and `plans --json` by the commands in the worker (test_view checks their processes)
+    code, _, err = run(["view", str(scene), "-o", str(page), "--lang", "en", "--step", "10"])
+    assert code == 0, err
+    planned = json.loads(cli("plans", str(scene), "--json")[1])     # at the A1 sheet's scales
     data = page_data(page)
     open_page(d, page)
     d.set_script_timeout(900)      # a hang guard, not a speed bound: the walk of the shaper's plans took > 30 s
@@ -517,9 +520,9 @@ def test_the_cam_in_the_explorer(driver, scene, tmp_path):  # noqa: F811
     else:
         path = ROOT / "examples" / f"{scene}.toml"
     page = tmp_path / f"{scene}.html"
-    r = graphplan("view", str(path), "-o", str(page), "--lang", "en", "--step", "2")
-    assert r.returncode == 0, r.stderr
-    doc = json.loads(graphplan("cam", str(path), "--json").stdout)
+    code, _, err = run(["view", str(path), "-o", str(page), "--lang", "en", "--step", "2"])   # in the worker
+    assert code == 0, err
+    doc = json.loads(cli("cam", str(path), "--json")[1])
     open_page(driver, page)
     shown = driver.execute_script("""
       return Array.from(document.querySelectorAll('#divisions button')).map((b, k) => {

@@ -88,14 +88,10 @@ def test_the_file_stem_is_the_designation_in_latin_letters_and_the_text_s_finger
     assert file_stem(no_title_en).startswith("Kryvoshypno-povzunnyi-mekhanizm-")  # its title, romanised
 
 
-@pytest.fixture(scope="module")
-def client():
-    pytest.importorskip("starlette")
-    from starlette.testclient import TestClient
-
-    from graphplan.web.app import Config, create_app
-    with TestClient(create_app(Config(workers=1, timeout=600, allowed_hosts=["testserver"]))) as c:
-        yield c
+@pytest.fixture
+def client(web):
+    """The worker's web app in the test client (conftest's ``web_client``, one for the worker)."""
+    return web
 
 
 def _named(r) -> str:

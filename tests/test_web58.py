@@ -17,14 +17,10 @@ CRANK = (ROOT / "examples" / "crank_slider.toml").read_text(encoding="utf-8")
 NOISE = re.compile(r"\d\.\d*(0000000|9999999)\d$")      # 1.1720000000000002, 0.3999999999999999
 
 
-@pytest.fixture(scope="module")
-def client():
-    pytest.importorskip("starlette")
-    from starlette.testclient import TestClient
-
-    from graphplan.web.app import Config, create_app
-    with TestClient(create_app(Config(workers=1, timeout=600, allowed_hosts=["testserver"]))) as c:
-        yield c
+@pytest.fixture
+def client(web):
+    """The worker's web app in the test client (conftest's ``web_client``, one for the worker)."""
+    return web
 
 
 def _table(client, text: str, name: str) -> list[dict[str, str]]:
