@@ -1733,6 +1733,22 @@ def _plan_letter(s, same: dict[str, str], lang: str) -> str:
 _FENCE = "a label's fence (removed once the labels are set)"
 
 
+def _unfenced_again(rec: Record, n: int, put) -> tuple[list, list, list]:
+    """A label set again with only the drawing's lines and letters in the way: its first setting
+    (``rec.items[n:]``) and the fences of the labels before taken out, ``put`` called again; returns
+    (first, again, fences) with neither setting nor the fences left in ``rec`` — the caller keeps the
+    better setting and puts the fences back."""
+    first = rec.items[n:]
+    del rec.items[n:]
+    kept = [p for p in rec.items if p.step == _FENCE]
+    rec.items[:] = [p for p in rec.items if p.step != _FENCE]
+    m = len(rec.items)
+    put()
+    again = rec.items[m:]
+    del rec.items[m:]
+    return first, again, kept
+
+
 def _apart(rec: Record, asked: list[LabelRequest],
            owned: dict[int, tuple[tuple[complex, complex], list[LabelRequest]]] | None = None,
            arrows: list[tuple[complex, complex]] = (), across: bool = True,
@@ -1774,14 +1790,7 @@ def _apart(rec: Record, asked: list[LabelRequest],
             # the fences of the labels set before drove it far out (M^Φ4 on the six-bar's scheme on
             # a 25 mm leader across the coupler) or its leader through a joint: set again with only
             # the drawing's lines and letters in the way, kept where that leads it better
-            first = rec.items[n:]
-            del rec.items[n:]
-            kept = [p for p in rec.items if p.step == _FENCE]
-            rec.items[:] = [p for p in rec.items if p.step != _FENCE]
-            m = len(rec.items)
-            put()
-            again = rec.items[m:]
-            del rec.items[m:]
+            first, again, kept = _unfenced_again(rec, n, put)
             better = (not _led_badly(again, rec.items, req.at, long=max(LONG_LEADER_MM, _leader_mm(first) - 1.0))
                       and _apart_from_labels(again, rec.items, req.size))
             rec.items.extend(kept)
@@ -1792,14 +1801,7 @@ def _apart(rec: Record, asked: list[LabelRequest],
             # II(4-5): "Φ5" set as any label 6.3 mm from its arrow, 2.2 mm from P_D's beside it):
             # set again with only the drawing's lines and letters in the way, kept where it then
             # stands nearer its own arrow than any other, led no worse and apart from the labels
-            first = rec.items[n:]
-            del rec.items[n:]
-            kept = [p for p in rec.items if p.step == _FENCE]
-            rec.items[:] = [p for p in rec.items if p.step != _FENCE]
-            m = len(rec.items)
-            put()
-            again = rec.items[m:]
-            del rec.items[m:]
+            first, again, kept = _unfenced_again(rec, n, put)
             better = (_owns(again, owned[i][0], arrows)
                       and not (not across and _led_badly(again, rec.items, req.at,
                                                          long=max(LONG_LEADER_MM, _leader_mm(first))))
