@@ -17,7 +17,7 @@ from graphplan.drawing.labels import NUMBERS_APART, place_beside, place_labels
 from graphplan.graphic.record import LabelRequest, Primitive, Record
 from graphplan.drawing.diagrams import AXIS_W   # a diagram's axes: solid, between thin and thick (GOST 2.303)
 from graphplan.graphic.forceplans import standard_scale
-from graphplan.graphic.scales import GOST_BETWEEN, SERIES, series_value
+from graphplan.graphic.scales import GOST_BETWEEN, SERIES, at_least, at_most, series_value
 from graphplan.exact.kinetostatics import Kinetostatics, full_turn
 from graphplan.util.files import write_atomic
 from graphplan.exact.positions import Study
@@ -361,10 +361,7 @@ def hodograph_scale(span: float, size: float) -> float:
     sheet; the force plans' too) that does — 270 and 260 N/mm on the press's sheet were no scale a
     draftsman sets (now 400 and 400; the curve at least half the size), review 59 #2's 7.5 N/mm none
     of the series."""
-    need = span / size
-    k0 = math.floor(math.log10(need))
-    return min(m for m in (series_value(v, k) for k in (k0, k0 + 1) for v in SERIES)
-               if m >= need * (1 - 1e-12))
+    return at_least(span / size)
 
 
 FLAT_GROWTH = 2.0      # a flat hodograph's larger extent grows up to this much over a round one's
@@ -394,9 +391,7 @@ DETAIL_APART = 3.0     # mm: the nearest two points a detail tells apart drawn a
 
 def _series_below(x: float) -> float:
     """The largest value of the series (``hodograph_scale``'s) not above ``x``."""
-    k0 = math.floor(math.log10(x))
-    return max(m for m in (series_value(v, k) for k in (k0 - 1, k0) for v in SERIES)
-               if m <= x * (1 + 1e-12))
+    return at_most(x)
 
 
 @dataclass

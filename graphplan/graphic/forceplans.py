@@ -293,11 +293,8 @@ def detail_scale(side_mm: float, mu_F: float) -> float:
     of the standard series (1, 2, 2.5, 4, 5 × 10^k: LAYOUT.md's for every μF, review 59 #2's inset
     at 1.5 N/mm none of it) that draws it at least ``READ_DETAIL_MM`` long, and at most half the
     plan's μF (the plan's ``plan_detail`` offers the same value)."""
-    from graphplan.graphic.scales import series_value
-    x = max(min(mu_F * side_mm / READ_DETAIL_MM, mu_F / 2.0), mu_F / DETAIL_GAIN_MOST)
-    k0 = math.floor(math.log10(x))
-    return max(m for m in (series_value(v, k) for k in (k0 - 1, k0) for v in SERIES)
-               if m <= x * (1 + 1e-12))
+    from graphplan.graphic.scales import at_most
+    return at_most(max(min(mu_F * side_mm / READ_DETAIL_MM, mu_F / 2.0), mu_F / DETAIL_GAIN_MOST))
 
 
 class _Polygon:

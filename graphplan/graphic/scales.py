@@ -63,6 +63,13 @@ def at_least(value: float) -> float:
     return next(m for m in series_around(value) if m >= value * (1 - 1e-12))
 
 
+def at_most(value: float) -> float:
+    """The largest coefficient of the standard series 1, 2, 2.5, 4, 5 × 10^k that is ≤ ``value``."""
+    if not (value > 0 and math.isfinite(value)):
+        raise GraphplanError(f"cannot choose a scale for a segment of size {value!r}")
+    return max(m for m in series_around(value) if m <= value * (1 + 1e-12))
+
+
 def standard_scale(value: float, target_mm: tuple[float, float], fixed: float | None = None,
                    largest: float | None = None, limit_mm: float | None = None) -> float:
     """The scale coefficient μ of the standard series for a segment of real size ``value``.
