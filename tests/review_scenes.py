@@ -8523,3 +8523,147 @@ synchronous_rpm = 1000
 # frc59c: review 59's Watt-II six-bar (lang en; the reviewer's b_watt_en.toml): its A1 force sheet drew group II(2-3)'s
 # plan at 1.5 N/mm, the hodographs of R12, R01 at 7.5 and M_b by the force plans −15 % (review 59 #2)
 FRC59C_WATT_EN = WATT_EN_REVIEW59   # the same scene (frc59c added it beside kin59b's copy)
+
+
+# Stop 60 (the lead's checks; /work/lead/s60): a plunger on a vertical offset guide driving a rocker, a rocking
+# roller cam turning clockwise, an 11/23 "auto" pair with a four-planet type-A train.
+LINK60 = '''
+# Stop 60 (the lead's check): an offset crank-slider on a VERTICAL guide (a plunger B) whose slider drives a
+# rocker O2C through the rod BC: I(0-1) -> II(2-3) RRP -> II(4-5) RRR attached to the slider; the crank
+# counter-clockwise at 150 rpm; a 60 N·m resistance moment on the rocker over its working swing; masses by
+# length; dynamics to a 1500-rpm motor, δ = 1/25.
+title = "Механізм плунжера з коромислом"
+title_en = "Plunger mechanism driving a rocker"
+designation = "ТММ.КП.60.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-60"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+O2 = [0.22, 0.30]
+
+[frame.guides]
+y = { through = [0.03, 0], angle_deg = 90, title_uk = "плунжера", title_en = "of the plunger" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.065
+rpm = 150
+direction = "ccw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.24
+points = { S2 = 0.35 }
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "y"
+mass = 8
+
+[[link]]
+name = "BC"
+number = 4
+joints = ["B", "C"]
+length = 0.20
+points = { S4 = 0.5 }
+
+[[link]]
+name = "O2C"
+number = 5
+joints = ["O2", "C"]
+length = 0.13
+points = { S5 = 0.5 }
+
+[branch]
+B = 1
+C = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 60
+output = "O2C"
+
+[loads]
+g = 9.81
+mass_per_length = 22
+inertia_factor = 0.1
+
+[[moment]]
+link = "O2C"
+magnitude = 60
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+efficiency = 0.85
+synchronous_rpm = 1500
+'''
+
+CAM60 = '''
+# Stop 60 (the lead's check): a ROCKING roller follower, the cam CLOCKWISE, a cycloidal
+# rise of 120°, a far dwell of 60°, a cosine return of 100°, a near dwell of 80°; a swing of 20°,
+# arm 100 mm, 12 divisions, [ϑ] 35°/40°.
+title = "Кулачковий механізм з коромисловим роликовим штовхачем (перевірка 60)"
+title_en = "Cam with a rocking roller follower (check 60)"
+designation = "ТММ.КМ.60.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-60"
+organisation = "НУБіП України"
+
+[cam]
+follower = "rocking"
+swing_deg = 20
+arm = 0.10
+centre_distance = 0.13
+roller_radius = 0.012
+phases_deg = { rise = 120, dwell_far = 60, return = 100, dwell_near = 80 }
+laws = { rise = "cycloidal", return = "cosine" }
+pressure_angle_deg = { rise = 35, return = 40 }
+rpm = 180
+direction = "cw"
+divisions = 12
+'''
+
+GEARS60 = '''
+# Stop 60 (the lead's check): a pair 11/23 with "auto" shifts (the pinion under 17 teeth), m = 6 mm, and a
+# type-A train chosen for u1H = 5.6 with FOUR planets (the neighbourhood condition), m = 2.5 mm, 1450 rpm.
+title = "Зубчаста передача 11/23 і планетарний редуктор (перевірка 60)"
+title_en = "A gear pair 11/23 and a planetary reducer (check 60)"
+designation = "ТММ.ЗП.60.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-60"
+organisation = "НУБіП України"
+
+[gears]
+z = [11, 23]
+module = 0.006
+shifts = "auto"
+
+[planetary]
+type = "A"
+ratio = 5.6
+planets = 4
+module = 0.0025
+rpm = 1450
+'''
