@@ -1452,6 +1452,16 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         one = one[1] if one is not None else None
         fine = one is not None and all(nat.families[n].rel(one.mu[n]) >= SET_SMALLEST - 1e-9
                                        for n in ("scheme", "groups", "forces"))
+        if one is None and f.name in ONE_SHEET:
+            # A1 is one sheet: a round's drawings that came out larger than measured (a crowded lever
+            # lettered on long leaders at a coarse μv) can leave no one-sheet composition at all at
+            # the sizes measured since, where an earlier round's holds its drawings as they came out
+            # (LINK52: its second round, μF 50 N/mm and μv 0.00942, holds; its fifth found none and
+            # the sheet became a set of two A1 sheets) — the latest that holds, as after the last round
+            held = next((q for q in reversed(tried) if q.shape != "set" and _holds(dr, nat, f, q)), None)
+            if held is not None:
+                p = held
+                break
         if one is None or not (f.name in ONE_SHEET or fine):
             hod.floor = HODOGRAPHS_FLOOR                 # a set: every drawing at least at its size
             one = _set(nat, f)
