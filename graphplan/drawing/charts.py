@@ -753,7 +753,7 @@ SHELF_MM = 4.5         # mm: the shelf the mark's letter stands on
 
 
 def _detail_mark(rec: Record, c: complex, r: float, step: str, within: bool = True,
-                 leads: tuple[float, ...] = (SHELF_LEAD,)) -> bool:
+                 leads: tuple[float, ...] = (SHELF_LEAD,), name: str = DETAIL_NAME) -> bool:
     """The ringed spot's mark as GOST 2.305 draws an extension element: a thin leader from the
     ring out to a shelf, the letter "I" standing on the shelf — not a bare stroke by the ring (the
     sieve's "I" read as a dash of the jump line). The first of the four diagonals (up-left first)
@@ -762,7 +762,7 @@ def _detail_mark(rec: Record, c: complex, r: float, step: str, within: bool = Tr
     ``leads``: the leader's lengths past the ring tried, the shortest first (a force plan's spot where
     its closing lines meet needs a longer one)."""
     from shapely.geometry import LineString, box
-    prim = Primitive("text", ((0.0, 0.0),), text=DETAIL_NAME, size=3.5)
+    prim = Primitive("text", ((0.0, 0.0),), text=name, size=3.5)
     i0, j0, i1, j1 = prim.ink()
     w = max(SHELF_MM, i1 - i0 + 1.5)
     ink = _ink_of(rec).buffer(-DETAIL_CLEAR + 0.6)
@@ -789,7 +789,7 @@ def _detail_mark(rec: Record, c: complex, r: float, step: str, within: bool = Tr
         n0 = len(rec.items)
         rec.add("polyline", [(a.real, a.imag), (b.real, b.imag), (e.real, e.imag)], role="label", layer="labels",
                 step=step)
-        rec.label((x, b.imag + 0.8), DETAIL_NAME, size=3.5, step=step)
+        rec.label((x, b.imag + 0.8), name, size=3.5, step=step)
         if best is not None or not collisions(rec):
             return True
         del rec.items[n0:]

@@ -1416,14 +1416,16 @@ def _polygon(fp: ForcePlans, gp: GroupPlan, lang: str, detail: bool, beside: boo
     rec.point((0.0, 0.0), layer="vectors", step=step)
     tiny = [s for s in sides if s.mm < TINY_MM]
     same = _coinciding(sides)
-    detail = _detail_ring(rec, sides, mu_F, step, _read_in_detail(gp)) if detail else None
+    rings = _detail_rings(rec, sides, mu_F, step, _read_in_detail(gp)) if detail else []
+    detail = rings[0][0] if rings else None
     read = next(iter(_read_in_detail(gp)), "")
     if detail is not None and read and gp.detail_sides and any(q.name == read for q in gp.detail_sides):
         from dataclasses import replace
         detail = replace(detail, fine=tuple(q for q in gp.detail_sides if q.mm > 1e-9), read=read)
-    # a side wholly within the ring is named in the detail (the crank's G1 and Φ1 by R21's tail)
+        rings[0] = (detail, rings[0][1])
+    # a side wholly within a ring is named in its detail (the crank's G1 and Φ1 by R21's tail)
     lettered = [s for s in sides if s.mm >= TINY_MM and s.name not in same
-                and (detail is None or not _within(s, detail.box))]
+                and not any(_within(s, d.box) for d, _ in rings)]
     anchors = _plan_anchors(lettered)
     # of two sides along one line the shorter letter is set second, on the line's other side
     pairs = {}
@@ -1458,8 +1460,22 @@ def _polygon(fp: ForcePlans, gp: GroupPlan, lang: str, detail: bool, beside: boo
     # the long letter first, its twin after it on the line's other side
     order = sorted(range(len(asked)), key=lambda k: k in choices)
     _apart(rec, [asked[k] for k in order], choices={j: choices[k] for j, k in enumerate(order) if k in choices})
-    if detail is not None and not _polygon_detail(rec, detail, sides, same, mu_F, lang, step, gp.label, beside):
+    # a sliver's several spots (LINK59's II(4-5): no corner of its 21 mm tall room holds a detail)
+    # under it in a row where its room has none
+    row = [] if len(rings) > 1 else None
+    beside = beside or row is not None
+    if detail is not None and not _polygon_detail(rec, detail, sides, same, mu_F, lang, step, gp.label, beside,
+                                                  row=row):
         return _polygon(fp, gp, lang, detail=False)      # no room for it: the plan as it was
+    # the further spots' details, "II", "III" in turn where the plan's room holds them (LINK59's
+    # II(4-5): G4 and Φ5 at P_C's tail, R05 at its head); a ring without room loses its ring
+    named = 1
+    for d, ring in rings[1:]:
+        if named < len(DETAIL_NAMES) and _polygon_detail(rec, d, sides, same, mu_F, lang, step, gp.label, beside,
+                                                         name=DETAIL_NAMES[named], row=row):
+            named += 1
+        else:
+            rec.items[:] = [q for q in rec.items if q is not ring]
     x0, y0, _, _ = rec.bounds()
     caption = f"μ_F = {num(mu_F, lang)} {unit('N/mm', lang)}"
     # a load the ruler reads as 0 mm is no side at all (G1 on the crank's plan): named with the tiny
@@ -1517,7 +1533,17 @@ def plan_detail(sides: list, mu_F: float, read: dict[str, float] | None = None) 
     10^k) at which the shortest side s_min is drawn at least ℓ long (μF_I ≤ μF·s_min/ℓ), no
     finer than draws the window ``DETAIL_MOST_MM`` across, and at least twice the plan's size (μF_I
     ≤ μF/2); None where no side is too short to carry its name (``TINY_MM``: named only under the
-    plan, "G1, Φ1 < 3 mm"), or no value is left."""
+    plan, "G1, Φ1 < 3 mm"), or no value is left. The first of ``plan_details``."""
+    got = plan_details(sides, mu_F, read)
+    return got[0] if got else None
+
+
+def plan_details(sides: list, mu_F: float, read: dict[str, float] | None = None) -> list[PlanDetail]:
+    """Every detail a force plan's short sides need (``plan_detail``'s rule for each knot of them,
+    ``_knots``), the knot with the most sides too short to carry their names first: a sliver's short
+    sides at both its ends (LINK59's II(4-5) at 20 N/mm: G4 0.5 mm and Φ5 1 mm at P_C's tail, 9 mm
+    apart along G5, R05 1.5 mm at its head, 75 mm off) each in their own — one window round G4, G5
+    and Φ5 could be enlarged only twice within 30 mm, G4 drawn 1 mm there."""
     from graphplan.drawing.charts import _series_below, hodograph_scale
     for s in sides:
         if read and s.name in read:
@@ -1527,41 +1553,67 @@ def plan_detail(sides: list, mu_F: float, read: dict[str, float] | None = None) 
             mu = read[s.name]
             span = max(abs(s.end.real - s.start.real), abs(s.end.imag - s.start.imag))
             pad = max(0.1, min(DETAIL_PAD, 0.5 * (DETAIL_MOST_MM * mu / mu_F - span)))
-            return PlanDetail((min(s.start.real, s.end.real) - pad, min(s.start.imag, s.end.imag) - pad,
-                               max(s.start.real, s.end.real) + pad, max(s.start.imag, s.end.imag) + pad), (mu,))
-    short = _knot([s for s in sides if 1e-9 < s.mm < DETAIL_SHORT_MM])
+            return [PlanDetail((min(s.start.real, s.end.real) - pad, min(s.start.imag, s.end.imag) - pad,
+                                max(s.start.real, s.end.real) + pad, max(s.start.imag, s.end.imag) + pad), (mu,))]
     longest = max((s.mm for s in sides), default=0.0)
-    # each side long enough to carry its name, and none a mere speck beside the plan's longest: none
-    # (LINK47's crank plan: G1 4 mm and Φ1 4.5 mm at the tip of R21's 271 mm sliver, review 47 #2)
-    if not any(s.mm < TINY_MM or s.mm < SPECK_SHARE * longest for s in short):
-        return None
+    out = []
+    for short in _knots([s for s in sides if 1e-9 < s.mm < DETAIL_SHORT_MM]):
+        # each side long enough to carry its name, and none a mere speck beside the plan's longest: none
+        # (LINK47's crank plan: G1 4 mm and Φ1 4.5 mm at the tip of R21's 271 mm sliver, review 47 #2)
+        if not any(s.mm < TINY_MM or s.mm < SPECK_SHARE * longest for s in short):
+            continue
+        x0, y0, x1, y1 = _window(short)
+        smallest = min(s.mm for s in short)
+        cap = hodograph_scale(mu_F * max(x1 - x0, y1 - y0), DETAIL_MOST_MM)
+        choices = dict.fromkeys(m for m in (max(_series_below(mu_F * smallest / least), cap) for least in DETAIL_LEAST_MM)
+                                if mu_F / m >= 2.0 - 1e-9)
+        if choices:
+            out.append(PlanDetail((x0, y0, x1, y1), tuple(choices)))
+    return out
+
+
+def _window(short: list) -> tuple[float, float, float, float]:
+    """The short sides' spot on the plan, padded by ``DETAIL_PAD``."""
     zs = [z for s in short for z in (s.start, s.end)]
-    x0, x1 = min(z.real for z in zs) - DETAIL_PAD, max(z.real for z in zs) + DETAIL_PAD
-    y0, y1 = min(z.imag for z in zs) - DETAIL_PAD, max(z.imag for z in zs) + DETAIL_PAD
-    smallest = min(s.mm for s in short)
-    cap = hodograph_scale(mu_F * max(x1 - x0, y1 - y0), DETAIL_MOST_MM)
-    choices = dict.fromkeys(m for m in (max(_series_below(mu_F * smallest / least), cap) for least in DETAIL_LEAST_MM)
-                            if mu_F / m >= 2.0 - 1e-9)
-    return PlanDetail((x0, y0, x1, y1), tuple(choices)) if choices else None
+    return (min(z.real for z in zs) - DETAIL_PAD, min(z.imag for z in zs) - DETAIL_PAD,
+            max(z.real for z in zs) + DETAIL_PAD, max(z.imag for z in zs) + DETAIL_PAD)
 
 
-def _knot(short: list) -> list:
-    """Of a plan's short sides, those crowding one spot: the sides within ``DETAIL_MOST_MM`` / 2 of
-    each other (end to end, chained), the knot with the most sides too short to carry their names
-    (``TINY_MM``), then the most sides. A short side at the plan's other end is no part of its
-    detail (the rocker six-bar's II(2-3): R^τ03 3.5 mm at R43's head, 90 mm from the knot of R^τ12,
-    G2, Φ2, Φ3 at its foot, made the window 90 mm tall and left the knot without a detail)."""
-    near = DETAIL_MOST_MM / 2
+def _chained(short: list, near: float) -> list[list]:
+    """The short sides chained into knots: ends within ``near`` of each other."""
     knots: list[list] = []
     for s in short:
         joined = [k for k in knots if any(min(abs(p - q) for p in (s.start, s.end) for q in (o.start, o.end)) <= near
                                           for o in k)]
         merged = [s] + [o for k in joined for o in k]
         knots = [k for k in knots if all(k is not j for j in joined)] + [merged]
-    if not knots:
-        return []
-    best = max(knots, key=lambda k: (sum(o.mm < TINY_MM for o in k), len(k)))
-    return [s for s in short if any(s is o for o in best)]
+    return knots
+
+
+def _knot(short: list) -> list:
+    """Of a plan's short sides, those crowding one spot: the first of ``_knots``."""
+    knots = _knots(short)
+    return knots[0] if knots else []
+
+
+def _knots(short: list) -> list[list]:
+    """A plan's short sides in the spots they crowd: the sides within ``DETAIL_MOST_MM`` / 2 of each
+    other (end to end, chained) — the knot with the most sides too short to carry their names
+    (``TINY_MM``), then the most sides, first. A short side at the plan's other end is no part of a
+    knot (the rocker six-bar's II(2-3): R^τ03 3.5 mm at R43's head, 90 mm from the knot of R^τ12,
+    G2, Φ2, Φ3 at its foot, made the window 90 mm tall and left the knot without a detail). A knot
+    whose window, enlarged until its shortest side is drawn ``DETAIL_LEAST_MM``'s least length,
+    would be wider than ``DETAIL_MOST_MM`` is split into the sides that meet end to end (LINK59's
+    II(4-5): G4 0.5 mm and Φ5 1 mm 9 mm apart along G5 — a 12.5 mm window, enlarged 6 times 75 mm)."""
+    knots = []
+    for k in _chained(short, DETAIL_MOST_MM / 2):
+        x0, y0, x1, y1 = _window(k)
+        grow = DETAIL_LEAST_MM[-1] / max(min(s.mm for s in k), 1e-9)
+        knots += _chained(k, 0.05) if max(x1 - x0, y1 - y0) * grow > DETAIL_MOST_MM + 1e-9 else [k]
+    # ties in the polygon's order (the details read I, II, III along it)
+    first = [min(j for j, s in enumerate(short) if any(s is o for o in k)) for k in knots]
+    order = sorted(range(len(knots)), key=lambda i: (-sum(o.mm < TINY_MM for o in knots[i]), -len(knots[i]), first[i]))
+    return [[s for s in short if any(s is o for o in knots[i])] for i in order]
 
 
 def _inside(a: complex, b: complex, box) -> tuple[float, float] | None:
@@ -1592,22 +1644,35 @@ def _detail_ring(rec: Record, sides: list, mu_F: float, step: str,
                  read: dict[str, float] | None = None) -> PlanDetail | None:
     """The short sides' spot ringed on the plan (GOST 2.305, as the hodographs' details) before the
     plan's letters are set, so that they keep clear of it; the detail (``plan_detail``), or None."""
-    d = plan_detail(sides, mu_F, read)
-    if d is None:
-        return None
-    x0, y0, x1, y1 = d.box
-    rec.circle(_pt(complex(x0 + x1, y0 + y1) / 2), abs(complex(x1 - x0, y1 - y0)) / 2, role="construction",
-               layer="construction", step=f"{step}: detail")
-    return d
+    got = _detail_rings(rec, sides, mu_F, step, read)
+    return got[0][0] if got else None
+
+
+def _detail_rings(rec: Record, sides: list, mu_F: float, step: str,
+                  read: dict[str, float] | None = None) -> list[tuple[PlanDetail, object]]:
+    """Every detail's spot ringed (``plan_details``): (the detail, its ring's item)."""
+    out = []
+    for d in plan_details(sides, mu_F, read):
+        x0, y0, x1, y1 = d.box
+        rec.circle(_pt(complex(x0 + x1, y0 + y1) / 2), abs(complex(x1 - x0, y1 - y0)) / 2, role="construction",
+                   layer="construction", step=f"{step}: detail")
+        out.append((d, rec.items[-1]))
+    return out
+
+
+DETAIL_NAMES = ("I", "II", "III", "IV")     # a plan's details in turn (GOST 2.305's extension elements)
 
 
 def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str], mu_F: float, lang: str,
-                    step: str, gp_label: str = "", beside: bool = False) -> bool:
+                    step: str, gp_label: str = "", beside: bool = False, name: str = "I",
+                    row: list[float] | None = None) -> bool:
     """The ringed spot (``_detail_ring``) drawn again at the detail's μF, every side through the
     window named there, "I (μ_F = 1 N/mm)" over it — the drawn plan enlarged (its lengths as the
     ruler read them, times μF/μF_I), as the hodographs' details — in a corner of the plan's room
     free of its lines and letters (the sheet's composition undisturbed), at the finest of the
-    detail's μF that has room there, its ring marked "I" on a shelf; False where none has."""
+    detail's μF that has room there, its ring marked "I" on a shelf; False where none has. ``row``: a
+    plan's several details set under it (``beside``) in a row from its left, [x, y] of the next one's
+    top-left (filled by the first so set), not each at its middle over the one before."""
     from shapely.geometry import box as shapely_box
     from shapely.ops import unary_union
 
@@ -1623,9 +1688,16 @@ def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str
     half = max(rb[2] - rb[0], _caption_across(gp_label)) / 2
     mid = (rb[0] + rb[2]) / 2
     tries = [(mu, False) for mu in d.choices] + ([(d.choices[0], True)] if beside else [])
+    if row:                 # a row begun under the plan: the next detail in it (I, II, III in order)
+        tries = [(mu, True) for mu in d.choices]
     for mu, out in tries:
-        det = _detail_drawing(d, mu, sides, same, mu_F, lang, step)
-        if out:                 # under the plan, at its middle
+        det = _detail_drawing(d, mu, sides, same, mu_F, lang, step, name)
+        if out and row is not None:         # under the plan, in a row from its left
+            if not row:
+                row[:] = [rb[0], rb[1] - DETAIL_GAP]
+            e0, _, _, e3 = det.bounds()
+            moved = det.moved(row[0] - e0, row[1] - e3)
+        elif out:               # under the plan, at its middle
             e0, _, e2, e3 = det.bounds()
             moved = det.moved((rb[0] + rb[2]) / 2 - (e0 + e2) / 2, rb[1] - DETAIL_GAP - e3)
         else:
@@ -1635,15 +1707,17 @@ def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str
         n0 = len(rec.items)
         rec.extend(moved)
         # the ring's mark "I" on a shelf, within the plan's extent where it finds room there
-        if not (_detail_mark(rec, c, r, f"{step}: detail mark")
-                or _detail_mark(rec, c, r, f"{step}: detail mark", within=False)
+        if not (_detail_mark(rec, c, r, f"{step}: detail mark", name=name)
+                or _detail_mark(rec, c, r, f"{step}: detail mark", within=False, name=name)
                 # a reaction's spot where the plan's closing lines meet (FRC56_PUMP's R05 at 20 N/mm):
                 # on a longer leader, out past them
                 or (out and _detail_mark(rec, c, r, f"{step}: detail mark", within=False,
-                                         leads=tuple(SHELF_LEAD * k for k in (2, 3, 4))))):
+                                         leads=tuple(SHELF_LEAD * k for k in (2, 3, 4)), name=name))):
             del rec.items[n0:]
             continue
-        rec.scales["mu_F detail"] = mu
+        rec.scales["mu_F detail" if name == "I" else f"mu_F detail {name}"] = mu
+        if out and row is not None:
+            row[0] = moved.bounds()[2] + DETAIL_GAP
         return True
     return False
 
@@ -1652,10 +1726,9 @@ DETAIL_MID_MM = 8.0     # a detail's side shorter than this is named at its midd
 
 
 def _detail_drawing(d: PlanDetail, mu: float, sides: list, same: dict[str, str], mu_F: float, lang: str,
-                    step: str) -> Record:
+                    step: str, name: str = "I") -> Record:
     """The detail at μF_I = ``mu``: every side through the window, enlarged μF/μF_I times about its
     middle (a side's head out of the window drawn as its line), named; its name over it."""
-    from graphplan.drawing.charts import DETAIL_NAME
     from graphplan.graphic.forceplans import Side
     k = mu_F / mu
     x0, y0, x1, y1 = d.box
@@ -1670,7 +1743,7 @@ def _detail_drawing(d: PlanDetail, mu: float, sides: list, same: dict[str, str],
         sides, k = list(d.fine), 1.0
         x0, y0, x1, y1 = c.real - w, c.imag - h, c.real + w, c.imag + h
         d = PlanDetail((x0, y0, x1, y1), d.choices, read=d.read)
-    dstep = f"{step}: detail"
+    dstep = f"{step}: detail" if name == "I" else f"{step}: detail {name}"
     det = Record(dstep)
     role = {"known": "absolute", "reaction": "result", "component": "relative"}
     drawn = []
@@ -1706,7 +1779,7 @@ def _detail_drawing(d: PlanDetail, mu: float, sides: list, same: dict[str, str],
                               side, LETTER, step=dstep) for at, s, side in anchors],
            owned, [(q.start, q.end) for q in drawn])
     b = det.bounds()
-    det.label((b[0], b[3] + 4.0), f"{DETAIL_NAME} (μ_F = {num(mu, lang)} {unit('N/mm', lang)})",
+    det.label((b[0], b[3] + 4.0), f"{name} (μ_F = {num(mu, lang)} {unit('N/mm', lang)})",
               size=2.5, step=dstep)
     return det
 
