@@ -255,7 +255,7 @@ WORDS: dict[str, tuple[str, str]] = {
                     "Hodographs: a number \"0–2\" marks points that coincide to the ruler's 0.5 mm"),
     "fs couple": ("{what} на важелі — моментом M·l_{{xy}}/l_{{XY}}: відрізок {seg} коротший за {mm} мм",
                    "{what} on the lever as a moment M·l_{{xy}}/l_{{XY}}: its image {seg} is under {mm} mm"),
-    "fs small": ('Сили, коротші за 10 мм (довжина, частка найбільшої на своєму плані): ', "Forces drawn under 10 mm (length, share of their plan's largest): "),
+    "fs small": ('Сили, коротші за 10 мм (довжина, частка найбільшої на своєму плані): ', "Forces drawn under 10 mm (length, share of the largest on their plan): "),
     # the kinematics sheet (sheets/kinematics.py)
     "kin positions": ('План положень', 'Position plan'),
     "kin velocity": ('План швидкостей', 'Velocity plan'),
