@@ -188,3 +188,68 @@ def test_link59s_sliver_draws_every_short_force_legibly_in_a_detail():
         assert abs(length * mu_I - exact[s.name]) <= 0.25 * mu_F + carried + 1e-6, (s.name, length * mu_I, exact[s.name])
     # the caption still names them as under 2 mm on the plan
     assert any(force_symbol("R05", "uk") in q.text for q in rec.items if q.kind == "text" and q.text.startswith("μ_F"))
+
+
+# -- the slider-attached group: the pin B the plunger's (FRC60_PLUNGER: LINK60 with the plunger listed first) -----
+
+def _cross(r: np.ndarray, f: np.ndarray) -> float:
+    return float(r[0] * f[1] - r[1] * f[0])
+
+
+def _reactions(phi_deg: float, pin_on_plunger: bool) -> dict[str, np.ndarray]:
+    """Every pair's reaction by the links' own equilibrium (numpy's linear solve, no graphplan): the
+    rod BC and rocker O2C (R34 or R24 at B, R45 at C, R05 at O2), then the rod AB and the plunger (R12 at
+    A, R23 the rod AB's on the plunger at B — or the plunger's on the rod, the pin being the rod's —,
+    R03 normal to the vertical guide), the crank's R01; Rij is link i's force on link j."""
+    p, v, acc = _motion(math.radians(phi_deg))
+    g = np.array([0.0, -9.81])
+    load = {i: MASS[i] * g - MASS[i] * acc[f"S{i}"] for i in (2, 3, 4, 5)}
+    couple = {i: -INERTIA[i] * acc[f"t{i}"] for i in (2, 4, 5)}
+    couple[5] += -60.0 * math.copysign(1.0, v["t5"])
+    b, c, a = p["B"], p["C"], p["A"]
+    # unknowns x = [Rb (on 4 at B), R54... ] — link 4: Rb + R54 + load4 = 0, moments about S4; link 5: R05 + R45 + load5
+    # with R45 = −R54: unknowns Rb(2), R54(2), R05(2)
+    m = np.zeros((6, 6))
+    rhs = np.zeros(6)
+    m[0:2, 0:2] = np.eye(2); m[0:2, 2:4] = np.eye(2); rhs[0:2] = -load[4]
+    s4 = p["S4"]
+    m[2, 0:2] = [-(b - s4)[1], (b - s4)[0]]; m[2, 2:4] = [-(c - s4)[1], (c - s4)[0]]; rhs[2] = -couple[4]
+    m[3:5, 4:6] = np.eye(2); m[3:5, 2:4] = -np.eye(2); rhs[3:5] = -load[5]
+    s5 = p["S5"]
+    m[5, 4:6] = [-(O2 - s5)[1], (O2 - s5)[0]]; m[5, 2:4] = [(c - s5)[1], -(c - s5)[0]]; rhs[5] = -couple[5]
+    x = np.linalg.solve(m, rhs)
+    rb, r54, r05 = x[0:2], x[2:4], x[4:6]
+    # link 2 (AB) and the plunger 3: unknowns R12(2), R32 (the plunger's on the rod, 2), R03x
+    on2 = np.zeros(2) if pin_on_plunger else -rb             # the rod BC's force on the rod AB at B
+    on3 = -rb if pin_on_plunger else np.zeros(2)             # … or on the plunger
+    m = np.zeros((5, 5))
+    rhs = np.zeros(5)
+    s2 = p["S2"]
+    m[0:2, 0:2] = np.eye(2); m[0:2, 2:4] = np.eye(2); rhs[0:2] = -load[2] - on2
+    m[2, 0:2] = [-(a - s2)[1], (a - s2)[0]]; m[2, 2:4] = [-(b - s2)[1], (b - s2)[0]]
+    rhs[2] = -couple[2] - _cross(b - s2, on2)
+    m[3:5, 2:4] = -np.eye(2); m[3, 4] = 1.0; rhs[3:5] = -load[3] - on3
+    y = np.linalg.solve(m, rhs)
+    g1 = np.array([0.0, -9.81 * 22 * R])                     # the crank's weight at O (S1 = O: no inertia)
+    return {"R01": y[0:2] - g1, "R12": y[0:2], "R23": -y[2:4], "R03": np.array([y[4], 0.0]), "R05": r05, "R45": -r54,
+            ("R34" if pin_on_plunger else "R24"): rb}
+
+
+@pytest.mark.parametrize("scene, pin_on_plunger", [("LINK60", False), ("FRC60_PLUNGER", True)])
+def test_link60s_reactions_with_the_pin_on_the_rod_or_the_plunger(scene, pin_on_plunger):
+    """The closed form's reactions against the links' own equilibrium solved here: the same R at B on the
+    rod BC either way (564.7 N), R12, R03, R05, R45 alike; only the rod AB's force on the plunger differs
+    — 321.7 N where the pin is the rod's (LINK60: R24, R42), 671.3 N where it is the plunger's
+    (FRC60_PLUNGER: R34, R43) — and M_b is the same."""
+    import review_scenes
+    from graphplan.exact import kinetostatics
+    st = scene_study(getattr(review_scenes, scene))
+    phi = kinetostatics.at_scene_angle(st)
+    ks = kinetostatics.analyse(st, np.array([phi]))
+    truth = _reactions(phi, pin_on_plunger)
+    got = {k: complex(r.force[0]) for k, r in ks.reactions.items()}
+    assert set(got) == set(truth)
+    for k, f in truth.items():
+        assert abs(got[k] - complex(*f)) <= 1e-4 * max(1.0, abs(complex(*f))), (k, got[k], f)
+    assert abs(complex(*truth["R23"])) == pytest.approx(671.31 if pin_on_plunger else 321.74, abs=0.01)
+    assert float(ks.balancing[0]) == pytest.approx(_balancing(phi), rel=1e-6)
