@@ -51,19 +51,21 @@ def _motion(phi: float, h: float = 1e-4):
     return p0, v, acc
 
 
-def _rocker_rate(phi: float) -> float:
-    return _motion(phi)[1]["t5"]
+def _rocker_rate(phi: float, h: float = 1e-5) -> float:
+    """dθ5/dφ by a central difference."""
+    return math.remainder(float(_points(phi + h)["t5"] - _points(phi - h)["t5"]), 2 * math.pi) / (2 * h)
 
 
 def _extremes() -> list[float]:
     """The crank angles (deg) where the rocker stands still: dθ5/dφ changes sign, bisected."""
-    grid = np.radians(np.arange(0.0, 360.0, 1.0))
+    step = 5.0
+    grid = np.radians(np.arange(0.0, 360.0, step))
     rates = [_rocker_rate(float(x)) for x in grid]
     out = []
     for i in range(len(grid)):
-        lo, hi = float(grid[i]), float(grid[i]) + math.radians(1.0)
+        lo, hi = float(grid[i]), float(grid[i]) + math.radians(step)
         if rates[i] * rates[(i + 1) % len(grid)] < 0:
-            for _ in range(60):
+            for _ in range(45):
                 mid = 0.5 * (lo + hi)
                 lo, hi = (mid, hi) if _rocker_rate(lo) * _rocker_rate(mid) > 0 else (lo, mid)
             out.append(math.degrees(0.5 * (lo + hi)) % 360.0)
