@@ -1590,12 +1590,6 @@ def _chained(short: list, near: float) -> list[list]:
     return knots
 
 
-def _knot(short: list) -> list:
-    """Of a plan's short sides, those crowding one spot: the first of ``_knots``."""
-    knots = _knots(short)
-    return knots[0] if knots else []
-
-
 def _knots(short: list) -> list[list]:
     """A plan's short sides in the spots they crowd: the sides within ``DETAIL_MOST_MM`` / 2 of each
     other (end to end, chained) — the knot with the most sides too short to carry their names
@@ -1640,17 +1634,11 @@ def _within(s, box) -> bool:
     return all(x0 - 1e-9 <= z.real <= x1 + 1e-9 and y0 - 1e-9 <= z.imag <= y1 + 1e-9 for z in (s.start, s.end))
 
 
-def _detail_ring(rec: Record, sides: list, mu_F: float, step: str,
-                 read: dict[str, float] | None = None) -> PlanDetail | None:
-    """The short sides' spot ringed on the plan (GOST 2.305, as the hodographs' details) before the
-    plan's letters are set, so that they keep clear of it; the detail (``plan_detail``), or None."""
-    got = _detail_rings(rec, sides, mu_F, step, read)
-    return got[0][0] if got else None
-
-
 def _detail_rings(rec: Record, sides: list, mu_F: float, step: str,
                   read: dict[str, float] | None = None) -> list[tuple[PlanDetail, object]]:
-    """Every detail's spot ringed (``plan_details``): (the detail, its ring's item)."""
+    """Every detail's spot ringed on the plan (GOST 2.305, as the hodographs' details) before the
+    plan's letters are set, so that they keep clear of them (``plan_details``): (the detail, its
+    ring's item)."""
     out = []
     for d in plan_details(sides, mu_F, read):
         x0, y0, x1, y1 = d.box
@@ -1666,7 +1654,7 @@ DETAIL_NAMES = ("I", "II", "III", "IV")     # a plan's details in turn (GOST 2.3
 def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str], mu_F: float, lang: str,
                     step: str, gp_label: str = "", beside: bool = False, name: str = "I",
                     row: list[float] | None = None) -> bool:
-    """The ringed spot (``_detail_ring``) drawn again at the detail's μF, every side through the
+    """The ringed spot (``_detail_rings``) drawn again at the detail's μF, every side through the
     window named there, "I (μ_F = 1 N/mm)" over it — the drawn plan enlarged (its lengths as the
     ruler read them, times μF/μF_I), as the hodographs' details — in a corner of the plan's room
     free of its lines and letters (the sheet's composition undisturbed), at the finest of the
