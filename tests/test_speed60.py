@@ -4,6 +4,8 @@
   searches, each on its own, that finds a spot — the candidates counted once for all, the check asked
   last; ``place_owned_line`` places the label where the old four searches did (a reference copy of
   them below, written from their definition).
+- The scene's other sheets count the forces document by ``forces.planned_sheets`` (the plan's rounds
+  alone; the plan goes on from them) where they end on one sheet: the whole plan's count.
 - The scene's other sheets count the dynamics document by ``dynamics.one_sheet`` (the search stopped
   at its first one-sheet composition): the same answer as the whole construction's shape.
 - A benchmark (slow): a generated mechanism's numbered A1 kinematics sheet, composed cold.
@@ -154,6 +156,32 @@ def test_the_dynamics_count_stops_where_one_sheet_is_known(case):
     D._MEMOS.pop(key, None)
     assert D.construction(st, dyn, f, args) == whole
     assert D.one_sheet(st, dyn, f, args) == first
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name,fmt", [("shaper", "A1"), ("LINK60", "A1"), ("shaper", "A3")])
+def test_the_forces_count_stops_after_the_rounds(name, fmt):
+    """``forces.planned_sheets`` (the plan's rounds alone, before the drawings grow) is the whole
+    plan's count of sheets wherever it answers — on A1 always (1) —, and the plan that goes on from
+    the rounds it kept is the plan composed from the start."""
+    import review_scenes
+    from conftest import example, scene_study
+    from graphplan.sheets import forces as F
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    st = scene_study(getattr(review_scenes, name)) if name.isupper() else example(name)
+    f, opts = form(fmt), SheetOptions(None, None, 0.5, "uk", "forces")
+    key = F._rounds_key(st, f, opts)
+    F._ROUNDS.pop(key, None)
+    F._PLANNED.pop(key, None)
+    counted = F.planned_sheets(st, f, opts)
+    went_on = F.plan.__wrapped__(st, f, opts)          # from the kept rounds (taken), not remembered
+    assert key not in F._ROUNDS
+    alone = F.plan.__wrapped__(st, f, opts)            # from the start
+    assert went_on[0] == alone[0]
+    assert counted is None or counted == alone[0].sheets
+    if fmt == "A1":
+        assert counted == 1
 
 
 @pytest.mark.slow
