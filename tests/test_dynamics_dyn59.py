@@ -192,6 +192,7 @@ def test_the_energy_scale_fills_its_zone_and_the_flywheel_read_agrees(name, monk
         return real(dyn_, args_, L_, size_, energy)
     monkeypatch.setattr(sd, "_built", spy)
     monkeypatch.setattr(sd, "_CONSTRUCTIONS", {})
+    monkeypatch.setattr(sd, "_MEMOS", {})      # the searches' measures (stop 60: kept per construction key)
     st = scene_study(SCENES[name])
     f, args = form("A1"), SheetOptions(precision=0.5, sheet="dynamics", lang="en")
     dyn = sd._analysed(st, None)

@@ -695,9 +695,10 @@ def _clip_params(sx: float, sy: float, ex: float, ey: float, x0: float, y0: floa
     return t0, t1
 
 
-def _far(ob: Obstacles, req: LabelRequest, ink: Box, ok=None):
+def _far(ob: Obstacles, req: LabelRequest, ink: Box, ok=None, *more):
     """A free spot farther out, joined to the point by a leader that crosses no label (and where
-    ``ok(box)``, when given)."""
+    ``ok(box)``, when given; else where the first of ``more`` holds, and so on: each as its own
+    search, the candidates counted once for all)."""
     boxes, starts = _candidates(req, ink, FAR, FAR_DIRECTIONS)
     n = FAR_DIRECTIONS
     # a label with rivals: nearer its own point first, then clear of them; its leader off the lines first
@@ -709,23 +710,26 @@ def _far(ob: Obstacles, req: LabelRequest, ink: Box, ok=None):
              else [(p, r) for r in rings for p in passes])
     counted: dict[int, np.ndarray] = {}
     led: dict[int, list] = {}
-    for (strict, apart), ring in order:
-        if ring not in counted:               # ring by ring, nearest first: counted lazily
-            counted[ring] = _counts(ob, boxes[ring * n:(ring + 1) * n], number=_number(req))
-        counts = counted[ring]
-        free = np.nonzero(counts == 0)[0] + ring * n
-        if ring not in led:                   # the free spots' leaders, and which meet a label or a leader
-            led[ring] = _led_blocked(ob, req.at, [tuple(boxes[k]) for k in free])
-        for k, (box, (a, b), meets, crosses) in zip(free, led[ring]):
-            if ok is not None and not ok(box):
-                continue
-            if meets or crosses:    # through a label, or across a drawn leader (two crossing read as an X)
-                continue
-            if not req.across and _crosses_thick(ob, a, b):   # nor across a link or an arrow, where asked
-                continue
-            if req.rivals and (not led_owned(req, box, b, strict) or apart and _along_line(ob, a, b)):
-                continue
-            return box, complex(starts[k]), (a, b)
+    fits: dict[tuple, bool] = {}              # the checks that do not depend on ``ok``, per spot
+    for test in (ok, *more):
+        for (strict, apart), ring in order:
+            if ring not in counted:               # ring by ring, nearest first: counted lazily
+                counted[ring] = _counts(ob, boxes[ring * n:(ring + 1) * n], number=_number(req))
+            counts = counted[ring]
+            free = np.nonzero(counts == 0)[0] + ring * n
+            if ring not in led:                   # the free spots' leaders, and which meet a label or a leader
+                led[ring] = _led_blocked(ob, req.at, [tuple(boxes[k]) for k in free])
+            for k, (box, (a, b), meets, crosses) in zip(free, led[ring]):
+                fit = fits.get((k, strict, apart))
+                if fit is None:
+                    # through a label, or across a drawn leader (two crossing read as an X); nor
+                    # across a link or an arrow, where asked; a label with rivals reads as its point's
+                    fit = fits[k, strict, apart] = not (
+                        meets or crosses or (not req.across and _crosses_thick(ob, a, b))
+                        or req.rivals and (not led_owned(req, box, b, strict) or apart and _along_line(ob, a, b)))
+                # ``ok`` (pure, and the costliest) asked last: the same first spot as asked first
+                if fit and (test is None or test(box)):
+                    return box, complex(starts[k]), (a, b)
     return None
 
 
@@ -1103,22 +1107,35 @@ def place_owned_line(record: Record, alternatives: list[LabelRequest], mine: tup
     req = alternatives[0]
     ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
     size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
+    seen: dict[tuple, tuple] = {}
+
+    def measured(box) -> tuple:
+        """A spot's leader, its box's distances to its own arrow and to each other, and whether the
+        leader crosses one — measured once for the four searches below."""
+        got = seen.get(box)
+        if got is None:
+            a, b = _leader(req.at, box)
+            got = seen[box] = (a, b, box_to_segment(box, *mine), [box_to_segment(box, *o) for o in near],
+                               any(_segments_cross(a, b, *o) for o in near), {})
+        return got
+
     def led(box, clear: float = LEADER_CLEAR, nearer: bool = True) -> bool:
         """On a leader from its head: the box clear of the other arrows — ``nearer``: and nearer its
         own than any of them (FRC56_PUSHER's "R43" on a leader 11.8 mm from its arrow, 8.3 mm from
         G2's) —, the leader across none and ``clear`` of them (0: touching is allowed)."""
-        a, b = _leader(req.at, box)
-        d = box_to_segment(box, *mine) + OWN_LINE_MM if nearer else 0.0
-        return ((owns_line(box, mine, near)
-                 or all(box_to_segment(box, *o) >= max(LED_CLEAR, d) for o in near))
-                and not any(_segments_cross(a, b, *o) for o in near)
-                and all(segment_gap(a, b, *o) >= clear for o in near))
+        a, b, mine_d, dists, crossed, gaps = measured(box)
+        d = mine_d + OWN_LINE_MM if nearer else 0.0
+        owns = all(x >= max(mine_d + OWN_LINE_MM, 1.5 * mine_d) for x in dists)     # ``owns_line``
+        if crossed or not (owns or all(x >= max(LED_CLEAR, d) for x in dists)):
+            return False
+        if clear not in gaps:
+            gaps[clear] = all(segment_gap(a, b, *o) >= clear for o in near)
+        return gaps[clear]
     local = ob.near(req.at, FAR[-1] + size)
     # the box nearer its own arrow first; else (a knot of parallel arrows, where no box is) the leader
     # alone names it: its end on its own arrow, the box 2 mm clear of the others
-    spot = (_far(local, req, ink, led) or _far(local, req, ink, lambda box: led(box, 0.0))
-            or _far(local, req, ink, lambda box: led(box, nearer=False))
-            or _far(local, req, ink, lambda box: led(box, 0.0, nearer=False)))
+    spot = _far(local, req, ink, led, lambda box: led(box, 0.0), lambda box: led(box, nearer=False),
+                lambda box: led(box, 0.0, nearer=False))
     if spot is None:
         return place_labels(record, [req], layer)
     box, start, (a, b) = spot

@@ -839,16 +839,40 @@ def _construction_key(st: Study, dyn, f: Form, args) -> tuple:
     return (repr(st.mech), dyn.delta, f.name, f.width, f.height, getattr(args, "divisions", None), args.precision)
 
 
-def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upward: bool = True) -> tuple:
+_MEMOS: dict[tuple, tuple] = {}
+
+
+def _memo(st: Study, dyn, f: Form, args) -> dict:
+    """What ``_construction`` measured per size (the drawings' and the bands' boxes in both languages,
+    the tables' content, the notes), kept per construction key and analysis (the very object): the
+    scene's other sheets count the dynamics document by a search that stops once one sheet is known
+    to hold it (``one_sheet``), and the dynamics sheet's own search (``construction``) in the same
+    process then measures nothing twice (stop 59: the shaper's kinematics sheet, numbered, took 14 s
+    cold, the dynamics count half of it)."""
+    key = _construction_key(st, dyn, f, args)
+    hit = _MEMOS.get(key)
+    if hit is None or hit[0] is not dyn:
+        if len(_MEMOS) >= 8:
+            _MEMOS.pop(next(iter(_MEMOS)))
+        hit = _MEMOS[key] = (dyn, {})
+    return hit[1]
+
+
+def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upward: bool = True,
+                  count_only: bool = False) -> tuple | None:
     """``construction`` computed (its table of the positions known to fit a sheet); ``scales_only``:
-    (L, size) as soon as they are known to stand (``construction_scales``)."""
+    (L, size) as soon as they are known to stand (``construction_scales``); ``count_only``: the first
+    one-sheet composition the search finds (``held``; not yet the larger diagram, ``larger``, nor ΔT's
+    finer scale, ``finer_energy``: neither changes whether one sheet holds it), None where a set of
+    sheets is drawn (``one_sheet``)."""
     x0, y0, x1, y1 = field_of(f)
     W, H = x1 - x0, y1 - y0
     sizes = _sizes(st)
 
-    drawn_at: dict = {}
-    banded: dict = {}
-    built_at: dict = {}
+    memo = _memo(st, dyn, f, args)
+    drawn_at: dict = memo.setdefault("drawn_at", {})
+    banded: dict = memo.setdefault("banded", {})
+    built_at: dict = memo.setdefault("built_at", {})
     mu_T: list = [None]          # ΔT(φ)'s own scale the search tries (``finer_energy``); None: the rule's
 
     def built(L: float, size: float) -> Flywheel:      # the construction once for both languages
@@ -897,7 +921,7 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
     def band_room(tree) -> float:              # the width of the box the composition gives the band
         return next(b[2] - b[0] for leaf, b in arrange(tree, (0.0, 0.0, W, H)) if leaf.name == "band")
 
-    drawn_bands: dict = {}
+    drawn_bands: dict = memo.setdefault("drawn_bands", {})
 
     def notes_in_widened(L: float, size: float, length: float, shape: str, C: Leaf, leaves: dict[str, Leaf],
                          per) -> bool:
@@ -1111,23 +1135,28 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
     floor = one_sheet_floor(st, dyn, f, args)
     if found is not None:                 # the band: the largest scales from the classical ones down at
         start = sizes.index(found)        # which a composition holds it on one sheet (the compressor's
-        got = larger(found) if upward and abs(built(*found).kl) >= floor - 1e-9 else None   # (the energy–mass
-        if got is not None:                                                       # diagram first)
-            return got[:2] if scales_only else finer_energy(got)
-        for k in range(start, len(sizes)):   # moments 348 mm tall at 1.5 left no room for any band there:
-            if k > start and fit(k) is None:  # its one A1 sheet came out as three)
+        got = None                        # moments 348 mm tall at 1.5 left no room for any band there:
+        if upward and abs(built(*found).kl) >= floor - 1e-9:      # its one A1 sheet came out as three)
+            # the energy–mass diagram first (``larger``: None exactly where ``held`` at ``found`` is)
+            got = held(*found, quick=False) if count_only else larger(found)
+        if got is not None:
+            return got[:2] if scales_only else got if count_only else finer_energy(got)
+        for k in range(start, len(sizes)):
+            if k > start and fit(k) is None:
                 continue
             if abs(built(*sizes[k]).kl) < floor - 1e-9:   # shrunk below reading: a set of sheets instead
                 break
             got = held(*sizes[k])
             if got is not None:
-                return got[:2] if scales_only else finer_energy(got)
+                return got[:2] if scales_only else got if count_only else finer_energy(got)
+    if count_only:
+        return None
     # else a set of sheets: each drawing at the scales a sheet of its own holds
 
     def on_a_page(b: Leaf) -> bool:       # over a later sheet's title block, or beside it
         return _fits_later(f, b)
 
-    moments_at: dict = {}
+    moments_at: dict = memo.setdefault("moments_at", {})
 
     def moments_leaf(L: float, size: float) -> Leaf:      # the moments and the work alone, both languages
         if (L, size) in drawn_at:
@@ -1715,9 +1744,29 @@ def count_dynamics_sheets(st: Study, f: Form, args: Options) -> int:
     languages, the band and the tables were half the time)."""
     dyn = _analysed(st, getattr(args, "delta", None))
     _refuse_a_table_taller_than(st, dyn, f, args)
-    if construction(st, dyn, f, args)[3] != "set":
+    if one_sheet(st, dyn, f, args):
         return 1
     return len(build_dynamics_sheet(st, f, args).pages)
+
+
+_ONE: dict[tuple, bool] = {}
+
+
+def one_sheet(st: Study, dyn, f: Form, args) -> bool:
+    """Whether ``construction`` draws the document on one sheet (its shape not "set"), known from its
+    search's first one-sheet composition (``_construction``'s ``count_only``): the larger diagram
+    and ΔT's finer scale it then seeks only change how that sheet is drawn. Remembered as
+    ``construction`` is, and read off it where it was made."""
+    if _table_overflow(st, dyn, f, args):
+        return False
+    key = _construction_key(st, dyn, f, args)
+    if key in _CONSTRUCTIONS:
+        return _CONSTRUCTIONS[key][3] != "set"
+    if key not in _ONE:
+        if len(_ONE) >= 64:
+            _ONE.pop(next(iter(_ONE)))
+        _ONE[key] = _construction(st, dyn, f, args, count_only=True) is not None
+    return _ONE[key]
 
 
 def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:

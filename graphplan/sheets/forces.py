@@ -1425,10 +1425,48 @@ def _within(dr: ForceDrafter, f: Form, p: Plan) -> bool:
     return True
 
 
-@remembered
-def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDrafter]:
-    """The force sheet's composition, once per scene, format and options (not the language): one
-    sheet where one holds every drawing at least at its target size (on A1 always), else a set."""
+_ROUNDS: dict[tuple, tuple] = {}
+
+
+def _rounds_key(st: Study, f: Form, opts: SheetOptions) -> tuple:
+    return (repr(st.mech), f.name, repr(opts))
+
+
+def _rounds_kept(st: Study, f: Form, opts: SheetOptions) -> tuple:
+    """``_rounds`` for ``plan``'s arguments, kept for ``plan`` to go on from (``planned_sheets``
+    asked first): taken, not copied — ``plan`` grows the drawings in ``nat`` — so it is kept for one
+    ``plan`` only, and a plan composed again starts again."""
+    key = _rounds_key(st, f, opts)
+    if key not in _ROUNDS:
+        if len(_ROUNDS) >= 8:
+            _ROUNDS.pop(next(iter(_ROUNDS)))
+        _ROUNDS[key] = _rounds(st, f, opts)
+    return _ROUNDS[key]
+
+
+_PLANNED: dict[tuple, int] = {}
+
+
+def planned_sheets(st: Study, f: Form, opts: SheetOptions) -> int | None:
+    """``plan(st, f, opts)[0].sheets`` where the composition's rounds end on one sheet (not a set):
+    the drawings grown after them (``_grown_groups``, ``_filled_sheets``, ``_grown_lever``,
+    ``_grown_hodographs``) change the plan's scales, never its shape nor its sheets, and ``plan``
+    then returns one of them — so 1 without growing them (a third of the forces plan: what the
+    kinematics sheet's number waited for). None where the rounds end on a set (``plan`` decides)."""
+    key = _rounds_key(st, f, opts)
+    if key not in _PLANNED:
+        p = _rounds_kept(st, f, opts)[2]
+        if p.shape == "set":
+            return None
+        if len(_PLANNED) >= 64:
+            _PLANNED.pop(next(iter(_PLANNED)))
+        _PLANNED[key] = p.sheets
+    return _PLANNED[key]
+
+
+def _rounds(st: Study, f: Form, opts: SheetOptions) -> tuple[ForceDrafter, Natural, Plan, Plan]:
+    """``plan``'s rounds: the composition tried at the sizes the drawings came out drawn at, until
+    one comes out as measured: (the drafter, the measures, the plan, the plan before growth)."""
     if not has_loads(st):
         raise GraphplanError(NO_LOADS.format(src=st.mech.source))
     dr = ForceDrafter(st, SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "forces"))
@@ -1473,7 +1511,15 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDr
         # no composition came out drawn as measured: the latest that holds its drawings as they
         # came out (each measured at its scales by ``_checked``), never one that runs off the field
         p = next((q for q in reversed(tried) if _holds(dr, nat, f, q)), p)
-    base = p
+    return dr, nat, p, p
+
+
+@remembered
+def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, ForceDrafter]:
+    """The force sheet's composition, once per scene, format and options (not the language): one
+    sheet where one holds every drawing at least at its target size (on A1 always), else a set."""
+    dr, nat, p, base = _rounds_kept(st, f, opts)
+    _ROUNDS.pop(_rounds_key(st, f, opts), None)     # grown below: a plan composed again starts again
     p = _grown_groups(dr, nat, f, p)
     room = _filled_sheets(dr, nat, f, p)
     filled = _grown_hodographs(dr, nat, f, _grown_lever(dr, nat, f, room))
@@ -2044,7 +2090,8 @@ def count_forces_sheets(st: Study, f: Form, options) -> int:
     """``len(build_forces_sheet(st, f, options).pages)`` without drawing it where ``plan`` makes it one
     sheet (that builder then lays ``pages = [items]``): what the scene's other sheets number by."""
     opts = options_of(options)
-    if plan(st, f, SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "forces"))[0].sheets == 1:
+    raw = SheetOptions(opts.positions, opts.accel, opts.precision, "uk", "forces")
+    if planned_sheets(st, f, raw) == 1 or plan(st, f, raw)[0].sheets == 1:
         return 1
     return len(build_forces_sheet(st, f, options).pages)
 
