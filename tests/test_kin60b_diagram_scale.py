@@ -102,10 +102,12 @@ def test_the_rulers_share_halves_and_the_readings_come_closer(sheet):
 @pytest.mark.slow
 @pytest.mark.parametrize("lang", ["en", "uk"])
 def test_the_note_names_the_cause_it_measured(sheet, lang):
+    from dataclasses import replace
+
     from graphplan.graphic.diagrams import LAB_LIMIT, ruler_on_s
     from graphplan.report.diagrams import short_limit_note
     st, f, p, nat, dr, d = sheet[:6]
-    d = d if d.lang == lang else __import__("dataclasses").replace(d, lang=lang)
+    d = d if d.lang == lang else replace(d, lang=lang)
     note = short_limit_note(d, lang, 5)
     drawn, own, on_s = d.position_errors()["a_at"], d.position_errors(d.exact)["a_at"], ruler_on_s(d)["a_at"]
     if np.max(np.abs(drawn)) <= LAB_LIMIT:
