@@ -37,14 +37,16 @@ def _sheet(text):
 
 
 @pytest.mark.slow
-def test_beam_pump_draws_its_stroke_at_0_0025_and_reads_a_closer():
+def test_beam_pump_draws_its_stroke_at_0_002_and_reads_a_closer():
     st, f, p, nat, dr, r = _sheet(BEAM_PUMP55)
     d = dr.diagrams(p.diagrams)
     stroke_mm = float(d.exact.s.max() - d.exact.s.min())
     stroke_m = stroke_mm * d.mu_s
     assert stroke_m == pytest.approx(0.17689, abs=2e-4)          # review55's closed form: 176.89 mm
-    assert d.mu_s == pytest.approx(0.0025)                         # not 0,004 (44 mm)
-    assert 60.0 <= stroke_mm <= 80.0
+    # not 0,004 (44 mm); since stop 60 not 0,0025 (71 mm) either: 0,002 draws 88 mm, within the
+    # 100-mm allowance, where the composition holds it (kin60b: the jaw crusher's ψ3)
+    assert d.mu_s == pytest.approx(0.002)
+    assert 80.0 < stroke_mm <= 100.0
     assert r.off_after < 15.0                                      # was 32.8 % at position 3
 
 
