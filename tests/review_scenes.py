@@ -8757,3 +8757,73 @@ delta = 0.04
 efficiency = 0.85
 synchronous_rpm = 1500
 '''
+
+
+# kin60b (stop 60): review 60's scene b — a single-toggle jaw crusher as a crank-rocker, in English; its A1 drew
+# ψ3 41 mm high (μψ 0,01, the 80-mm allowance) with 45 mm empty above it, ε3 read 17 % off at a position.
+KIN60B_CRUSHER = '''
+title = "Щокова дробарка (кривошипно-коромисловий механізм)"
+title_en = "Single-toggle jaw crusher (crank-rocker four-bar)"
+designation = "TMM.KP.60.800"
+lang = "en"
+
+[sheet]
+student = "Reviewer R. R."
+teacher = "Teacher T. T."
+group = "MB-60"
+organisation = "NULES of Ukraine"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.21, -0.45]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.04
+rpm = 250
+direction = "ccw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.50
+points = { S2 = 0.5, E = 0.6 }
+mass = 60
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.20
+points = { S3 = 0.5 }
+
+[branch]
+B = -1
+
+[positions]
+count = 12
+start = "working"
+accel = [3, 9]
+force_phi_deg = 90
+output = "O2B"
+
+[loads]
+g = 9.81
+mass_per_length = 30
+inertia_factor = 0.1
+
+[[force]]
+point = "E"
+magnitude = 4000
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 750
+'''

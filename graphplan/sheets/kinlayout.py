@@ -423,10 +423,14 @@ def taller_in_place(dr: Drafter, nat: Natural, f: Form, p: Plan) -> Plan:
     largest — as a set's diagrams are grown (``taller``); kept where none reads better. Review 12:
     the A1 drew φ5 29 mm high (L 120 mm, μφ 0,01 рад/мм) beside a 301-mm column of tables; there
     the chords' own error rules ε5 (17.5 % at 0.5, 22.7–38 % at the taller heights), so it stays.
-    Also the s diagram alone taller at a finer μs (``finer_s``), the v and a diagrams as high."""
+    Also the s diagram alone taller at a finer μs (``finer_s``), the v and a diagrams as high — on
+    diagrams already at their full size too: review 60 #1, the jaw crusher's ψ3 drawn 41 mm high
+    (μψ 0,01, its 80-mm allowance) with 45 mm empty above it, ε3 read 17 % off at a position; at
+    0,005 (82.5 mm, within the 100-mm allowance a set's diagrams have) 6.3 %."""
     from graphplan.sheets.kinematics import diagram_options
     long_, tall = factors(p.diagrams)
-    if tall >= 1.0 - 1e-9 and long_ >= 1.0 - 1e-9:
+    full = tall >= 1.0 - 1e-9 and long_ >= 1.0 - 1e-9
+    if full and not finer_s(dr, p.diagrams):
         return p
     o = dr.opts
 
@@ -455,22 +459,25 @@ def taller_in_place(dr: Drafter, nat: Natural, f: Form, p: Plan) -> Plan:
 
 def finer_s(dr: Drafter, k) -> list[tuple[float, float, float]]:
     """One sheet's diagrams at size ``k`` with their s diagram drawn taller at each finer standard μs
-    the height allowance up to ``S_HEIGHT`` (80 mm) holds, the v and a diagrams as high as at ``k``
-    (``first_options``' triple: the poles lower in proportion): (length, the smallest height factor
-    in ``HEIGHT_STEP`` that draws at that μs, ``k``'s height) — ``taller_in_place`` takes one where
+    the height allowance up to ``HEIGHTS[0]`` × ``S_HEIGHT`` (100 mm, a set's tallest) holds, the v
+    and a diagrams as high as at ``k`` (``first_options``' triple: the poles lower in proportion; for
+    one factor ``k``, as high as the pair (length, ``k``) draws them, from its whole allowance — the
+    jaw crusher's v, a 53.5, 45 → 74.5, 70.5 mm read ε3 6.3 % off, kept at k's heights 10.1 %):
+    (length, the smallest height factor in ``HEIGHT_STEP`` that draws at that μs, ``k``'s height)
+    — ``taller_in_place`` takes one where
     the composition's band holds it and it reads closer to the exact values. The short s ordinates
     are what the ruler's half millimetre amplifies in v and a: review 55 #3's beam pump drew its
     stroke 44 mm high (μs 0,004) in an 85-mm band, a_D 32.8 % off at a position; at 0,0025 it is
     71 mm high."""
     from graphplan.sheets.kinematics import first_options, _drawn
     long_, tall = factors(k)
-    if tall >= 1.0 - 1e-9:
+    if tall >= HEIGHTS[0] - 1e-9:
         return []
     o = dr.opts
     mu = dr.diagrams(k).mu_s
     out, seen = [], {mu}
-    for j in range(1, int(round((1.0 - tall) / HEIGHT_STEP)) + 1):
-        t = round(min(1.0, tall + j * HEIGHT_STEP), 6)
+    for j in range(1, int(round((HEIGHTS[0] - tall) / HEIGHT_STEP)) + 1):
+        t = round(min(HEIGHTS[0], tall + j * HEIGHT_STEP), 6)
         k3 = (long_, t, tall)
         mu_t = _drawn(dr.st, first_options(dr.st, k3, o.positions), 0.0).mu_s
         if mu_t < mu - 1e-12 and mu_t not in seen:
