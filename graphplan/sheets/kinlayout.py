@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
-from graphplan.drawing.layout import GAP, Grid, Leaf, Row, Shelf, Stack, column_size, extent, flow, split
+from graphplan.drawing.layout import GAP, SHELF_MOST, Grid, Leaf, Row, Shelf, Stack, column_size, extent, flow, split
 from graphplan.graphic.record import Record
 from graphplan.graphic.scales import LEGIBLE_MM, LEGIBLE_READS, PLAN_MM, series_choices   # the plans read: p_v a and π a at least this long,
 from graphplan.sheets.compose import FACTORS, Family, choose_levels, coarser, field_of, finer, notes_height
@@ -1043,7 +1043,10 @@ def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], w
         rows = first + grid(V) + [[D]]
     rows += grid(A)
     if A:
-        rows[-1] = [c for c in rows[-1] if c.name] + tail
+        # a shelf (``flow`` breaks it into the lines, or a line of columns, that put the most on the
+        # sheet): row by row, the last line's Table 4 and notes took a sheet of their own (stop 59)
+        last = [c for c in rows[-1] if c.name] + tail
+        rows[-1] = Shelf(last) if len(last) <= SHELF_MOST else last
     else:
         rows.append(Shelf(_opened(tail)))     # the tables and notes a row of their own: broken to fill the sheet
     return rows
