@@ -1372,7 +1372,9 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                 wrong = 0 if dr.diagrams_right(k) else 1
                 small = int(fams["position"].drawn(mu["position"]) < CRANK_MM - 1e-9 and mu["position"] > top)
                 low = flat(dr, k)
-                key = (count + wrong + small + orphan + low + lifted(nat, short, mu), wrong,
+                # of as many, no sheet of the notes alone: a shelf's columns fill a sheet with the
+                # tables and can leave the notes to the next (LINK57's A3 sheet 5, stop 59)
+                key = (count + wrong + small + orphan + low + lifted(nat, short, mu), orphan, wrong,
                        small, low, int(fill < SPARSE), -(factor == TABLES), -round(rel, 6),
                        -round(fill, 1))
                 if best is None or key < best[0]:
