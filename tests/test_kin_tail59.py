@@ -94,3 +94,24 @@ def test_the_agitators_a3_set_takes_four_sheets():
     names = [p.name for p in sheet.pages[-1].placed]
     tail = [n for n in names if "table" in n or n == "notes"]
     assert tail == ["velocity table", "acceleration table 1", "dimensions table", "diagram readings table", "notes"]
+
+
+@pytest.mark.slow
+def test_link57s_a3_set_takes_four_sheets_the_notes_with_the_tables():
+    """LINK57's A3 kinematics set took six sheets, sheet 4 Table 1 alone (≈ 60 % empty), sheet 5
+    Tables 2 and 3 (kin59). With the shelf's columns, four: the notes on the last table's sheet, the
+    tables in order, the tables' sheets at least 45 % drawn on."""
+    from conftest import scene_study
+    from review_scenes import LINK57
+    from test_sets_fill import check_no_orphan, fill
+
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.sheet import BUILDERS
+    sheet = BUILDERS["kinematics"](scene_study(LINK57), form("A3"), SheetOptions(sheet="kinematics"))
+    assert len(sheet.pages) == 4
+    check_no_orphan(sheet)
+    fills = [round(fill(page), 3) for page in sheet.pages]         # 0.551, 0.343, 0.478, 0.626 (stop 59)
+    tables = [k for k, page in enumerate(sheet.pages) if any("table" in p.name for p in page.placed)]
+    assert min(fills[k] for k in tables) >= 0.45 and min(fills) >= 0.3, fills      # sheet 2: nine velocity plans
+    tail = [p.name for page in sheet.pages for p in page.placed if "table" in p.name or p.name == "notes"]
+    assert tail == ["velocity table", "acceleration table 1", "dimensions table", "diagram readings table", "notes"]
