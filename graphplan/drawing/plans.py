@@ -396,8 +396,10 @@ def other_slides(plans: Plans) -> list[str]:
     """The points of the sliders on frame guides other than the output slide — a V-twin's second
     piston C — as the notes name them (``sheets.kintables.other_outputs``): each has its own extreme
     positions and stroke on the position plan (review 59: B′, B″ and H were drawn, C had none); where
-    the output is a rocker, every slider on a frame guide (stop 60: LINK60's plunger B, which drives
-    the rocker, had neither B′, B″ nor its stroke H beside the rocker's C′, C″ and ψ_max)."""
+    the output is a rocker, a slider whose extreme positions are the rocker's — a plunger the rocker
+    follows (stop 60: LINK60's plunger B had neither B′, B″ nor its stroke H beside the rocker's C′,
+    C″ and ψ_max); not one that stops elsewhere (LINK57's piston B: its primes and stroke crowded the
+    rocker's dwell number 12.6 mm off its points)."""
     from graphplan.exact.positions import point_slider
     st = plans.study
     if st.output.kind not in ("slide", "link"):
@@ -406,7 +408,15 @@ def other_slides(plans: Plans) -> list[str]:
     names = [next(iter(link.local)) for link in mech.links.values()
              if link.slides_on is not None and mech.guides[link.slides_on].body == FRAME
              and next(iter(link.local)) != st.output.name]
-    return [c for c in dict.fromkeys(names) if point_slider(mech, c) is not None]
+    out = [c for c in dict.fromkeys(names) if point_slider(mech, c) is not None]
+    if st.output.kind == "link":
+        ends = sorted(lay.phi % 360.0 for lay in stroke_ends(plans))
+
+        def same(c: str) -> bool:
+            own = sorted(lay.phi % 360.0 for lay in slide_ends(plans, c))
+            return len(own) == len(ends) == 2 and all(abs(a - b) < 0.01 for a, b in zip(own, ends))
+        out = [c for c in out if same(c)]
+    return out
 
 
 def slide_ends(plans: Plans, name: str) -> list[Layout]:
