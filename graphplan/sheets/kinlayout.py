@@ -1364,8 +1364,10 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                     for nw in wide:
                         tried = counted(_set_rows(nat, mu, dsize, factor, width, after, nw, (cell_of, notes_of, own_of),
                                                   stacked), region, keep, later)
-                        if tried is None:     # a drawing larger than a sheet; a stacked block too large: the others
-                            return found if stacked else None
+                        if tried is None:     # a drawing larger than a sheet: none; a stacked block too large:
+                            if not stacked:   # the notes wrapped wider, which are lower (LINK57's A3 at 1:2:
+                                return None   # Table 4 over the 198-mm notes is too tall for a sheet, over
+                            continue          # the notes two columns wide it is not — they stood alone)
                         got = (*tried, nw, stacked)
                         orphan = got[1]
                         # the narrowest notes that take no more sheets (a sheet of the notes alone counted)
