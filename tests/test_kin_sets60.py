@@ -6,7 +6,9 @@
    labels piled up, for one sheet fewer (stop 59).
 2. The velocity (and acceleration) plans flow each at its own size, a line as high as its tallest:
    in cells as large as the largest plan LINK59's and the Watt's A3 sets held three or four velocity
-   plans a sheet (27–39 % drawn on), the four-bar's sheet 3 four plans (17 %)."""
+   plans a sheet (27–39 % drawn on), the four-bar's sheet 3 four plans (17 %).
+3. A rocker that follows a plunger on a frame guide (LINK60): the plunger's B′, B″ and stroke H on the
+   position plan beside the rocker's C′, C″ and ψ_max."""
 from __future__ import annotations
 
 import pytest
