@@ -58,7 +58,9 @@ def test_tables_beside_the_last_plan_stand_one_over_another_and_fill_the_sheet()
     assert flat is not None and column is not None
     where = {n: {leaf.name: (k, b) for k, page in enumerate(pages) for leaf, b in page}
              for n, pages in (("flat", flat), ("column", column))}
-    assert where["flat"]["t2"][0] > where["flat"]["acceleration 0"][0]        # Table 2 on the next sheet
+    # one beside another, Table 2 went to the next sheet; since stop 59 the plan's row is a shelf whose
+    # line of columns (``layout._columns``) sets it under Table 1 there too
+    assert where["flat"]["t2"][0] == where["flat"]["acceleration 0"][0]
     k, b1 = where["column"]["t1"]
     assert where["column"]["t2"][0] == k == where["column"]["acceleration 0"][0]
     b2 = where["column"]["t2"][1]
@@ -66,7 +68,7 @@ def test_tables_beside_the_last_plan_stand_one_over_another_and_fill_the_sheet()
     assert b1[1] >= b2[3] - 1e-6 and min(b1[0], b2[0]) >= a[2] - 1e-6          # T1 over T2, right of the plan
     assert len(column) <= len(flat)
     blank = lambda pages: max(set_blanks(pages, f)[:-1], default=0.0)
-    assert blank(column) < blank(flat)
+    assert blank(column) <= blank(flat) + 1e-6
 
 
 def test_set_tail_keeps_the_reading_order_of_the_tables():

@@ -447,22 +447,77 @@ def _shelf_lines(items: list, y: float, bottom: float, gap: float, over) -> tupl
     inf = math.inf
     least = [0.0] + [inf] * n           # the least height that lays items[:j] in lines
     before = [0] * (n + 1)
+    shape: list[list | None] = [None] * (n + 1)     # a line of columns ending before item j, or None: a row
     for j in range(1, n + 1):
         for i in range(j):
             if least[i] == inf:
                 continue
             top = y - least[i] - (gap if i else 0.0)
             h = max(heights[i:j])
+            line = None
             if top - h < bottom - 1e-9 or over(items[i:j], top, h):
-                continue
+                line, h = _columns(items[i:j], top, bottom, gap, over)
+                if line is None:
+                    continue
             if top - h > y - least[j] + 1e-9:
                 least[j] = y - (top - h)
                 before[j] = i
+                shape[j] = line
     j = max(k for k in range(n + 1) if least[k] < inf)
     breaks = [j]
     while breaks[-1] > 0:
         breaks.append(before[breaks[-1]])
-    return laid(breaks[::-1]) if j else ([], y)
+    if not j:
+        return [], y
+    breaks = breaks[::-1]
+    if not any(shape[b] for b in breaks[1:]):
+        return laid(breaks)
+    used, top = [], y
+    for a, b in zip(breaks, breaks[1:]):
+        line = shape[b] or items[a:b]
+        h = max(extent(t)[1] for t in line)
+        used.append((top, h, line))
+        top -= h + gap
+    return used, top
+
+
+def _held(node) -> int:
+    """How many of a shelf's items a node of its lines holds: a column (``_columns``' ``Stack``) its
+    items, an item one."""
+    return len(node.children) if getattr(node, "column", False) else 1
+
+
+def _column(items: list) -> Stack:
+    """A column of a shelf's line (``_columns``): its items one under another."""
+    col = Stack(list(items))
+    col.column = True
+    return col
+
+
+def _columns(items: list, top: float, bottom: float, gap: float, over) -> tuple[list | None, float]:
+    """``items`` as one line of columns, in reading order — down each column, then the next to the
+    right, as the A1's tables' column reads — where no line of them side by side fits: the lowest
+    such line that stands above ``bottom`` and is not ``over`` the room, as (its columns, each a
+    ``Stack`` of two or more items or an item alone; its height), else (None, 0). A set's tables and
+    notes took a row each over two sheets: LINK59's A3 sheet 6 held Tables 1–3 in its middle third,
+    sheet 7 Table 4 and the notes in its top third (stop 59)."""
+    n = len(items)
+    best, least = None, math.inf
+    for mask in range(1 << (n - 1)):            # a break after item k where bit k is set
+        groups, start = [], 0
+        for k in range(n - 1):
+            if mask >> k & 1:
+                groups.append(items[start:k + 1])
+                start = k + 1
+        groups.append(items[start:])
+        if len(groups) == n:                    # one item a column: the row itself
+            continue
+        line = [_column(g) if len(g) > 1 else g[0] for g in groups]
+        h = max(extent(t)[1] for t in line)
+        if h >= least - 1e-9 or top - h < bottom - 1e-9 or over(line, top, h):
+            continue
+        best, least = line, h
+    return best, (least if best is not None else 0.0)
 
 
 def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, gap: float = GAP,
@@ -593,7 +648,7 @@ def flow(rows: Sequence[Sequence[Node]], region: Box, keep: Box | None = None, g
             if used:
                 page.extend(used)
                 y = top
-                queue = queue[sum(len(u[2]) for u in used):]
+                queue = queue[sum(_held(t) for u in used for t in u[2]):]
             if not queue:
                 break
             if not page:                       # alone on an empty sheet and still too large

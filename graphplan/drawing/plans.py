@@ -395,16 +395,28 @@ def stroke_ends(plans: Plans) -> list[Layout]:
 def other_slides(plans: Plans) -> list[str]:
     """The points of the sliders on frame guides other than the output slide — a V-twin's second
     piston C — as the notes name them (``sheets.kintables.other_outputs``): each has its own extreme
-    positions and stroke on the position plan (review 59: B′, B″ and H were drawn, C had none)."""
+    positions and stroke on the position plan (review 59: B′, B″ and H were drawn, C had none); where
+    the output is a rocker, a slider whose extreme positions are the rocker's — a plunger the rocker
+    follows (stop 60: LINK60's plunger B had neither B′, B″ nor its stroke H beside the rocker's C′,
+    C″ and ψ_max); not one that stops elsewhere (LINK57's piston B: its primes and stroke crowded the
+    rocker's dwell number 12.6 mm off its points)."""
     from graphplan.exact.positions import point_slider
     st = plans.study
-    if st.output.kind != "slide":
+    if st.output.kind not in ("slide", "link"):
         return []
     mech = st.mech
     names = [next(iter(link.local)) for link in mech.links.values()
              if link.slides_on is not None and mech.guides[link.slides_on].body == FRAME
              and next(iter(link.local)) != st.output.name]
-    return [c for c in dict.fromkeys(names) if point_slider(mech, c) is not None]
+    out = [c for c in dict.fromkeys(names) if point_slider(mech, c) is not None]
+    if st.output.kind == "link":
+        ends = sorted(lay.phi % 360.0 for lay in stroke_ends(plans))
+
+        def same(c: str) -> bool:
+            own = sorted(lay.phi % 360.0 for lay in slide_ends(plans, c))
+            return len(own) == len(ends) == 2 and all(abs(a - b) < 0.01 for a, b in zip(own, ends))
+        out = [c for c in out if same(c)]
+    return out
 
 
 def slide_ends(plans: Plans, name: str) -> list[Layout]:
@@ -463,7 +475,9 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk", joine
     r = crank.length / plans.mu_l
     # the other sliders' extreme positions (a V-twin's second piston): drawn, their points lettered
     # C′, C″ and their strokes dimensioned, as the output's are
-    others = [lay for c in other_slides(plans) for lay in slide_ends(plans, c)]
+    others = [lay for c in other_slides(plans) for lay in slide_ends(plans, c)
+              if all(abs(lay.phi - e.phi) > 1e-4 for e in plans.extremes)]     # not drawn twice (a rocker's
+    # extremes where its plunger's are the same: LINK60's rocker moves with B alone)
     yokes = {n: yoke_spans(sc, every + plans.extremes + others, n, O, r) for n in mech.links if yoke_guide(mech, n)}
     outlines = draw_frame(rec, sc, every + plans.extremes + others, thick_lays, drawn=every + plans.extremes + others,
                           yokes=yokes)
@@ -877,7 +891,12 @@ def stroke_dimensions(rec: Record, plans: Plans, O: complex, lang: str = "uk") -
     real size in mm (``H = 250``, ``e = 30``), as a kinematic scheme gives them. None for a rocker."""
     st = plans.study
     if st.output.kind == "link":
-        return swing_dimension(rec, plans, lang)
+        # a rocker driven through a slider on a frame guide: the slider's stroke too (LINK60's plunger)
+        other = other_slides(plans)
+        return swing_dimension(rec, plans, lang) + [
+            label for name in other
+            for label in _stroke_dimension(rec, plans, O, name, "H" if len(other) == 1 else f"H_{{{escape(name)}}}",
+                                           lang)]
     if st.output.kind != "slide":
         return []
     sc = plans.scheme

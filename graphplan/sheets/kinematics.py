@@ -6,7 +6,7 @@ beside the plans) and the notes.
 
 Composed by construction (docs/composition.md): the tables in a column by the title block, the notes
 above it; in the rest of the field the position plan and the diagrams, the velocity plans in a grid of
-equal cells in position order, the acceleration plans together. The scales are chosen once per scene
+cells in position order, the acceleration plans together. The scales are chosen once per scene
 and format by arithmetic on the drawings' natural sizes (``plan``; the arithmetic is
 sheets/kinlayout.py): the largest standard scales at which the composition fits; the terminal's
 ``plans``/``diagrams``, the API and the explorer ask ``sheet_scales`` for the same numbers. Where one
@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from graphplan.drawing.layout import GAP, Grid, Leaf, Placed, arrange, cells, centred, flow, top_left
+from graphplan.drawing.layout import GAP, Grid, Leaf, Placed, arrange, centred, flow, top_left
 from graphplan.exact.positions import Study
 from graphplan.graphic.record import Record
 from graphplan.sheets.compose import (Sheet, SheetOptions, captioned, compose, drawing_scale, field_of, grown,
@@ -487,7 +487,7 @@ def build_kinematics_sheet(st: Study, f: Form, options) -> Sheet:
         pages = [items]
     else:
         notes_rec = set_notes(d["notes"], p.notes)
-        rows = set_rows(P, D, cells(V), cells(A), set_tail(tables, Leaf("notes", record=notes_rec), p.stacked, p.beside),
+        rows = set_rows(P, D, V, A, set_tail(tables, Leaf("notes", record=notes_rec), p.stacked, p.beside),
                         region[2] - region[0], p.after)
         laid = flow(rows, region, keep_out(f), later=later_keep(f), ragged=True)
         if laid is None:

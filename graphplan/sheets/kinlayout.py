@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
-from graphplan.drawing.layout import GAP, Grid, Leaf, Row, Shelf, Stack, column_size, extent, flow, split
+from graphplan.drawing.layout import GAP, SHELF_MOST, Grid, Leaf, Row, Shelf, Stack, column_size, extent, flow, split
 from graphplan.graphic.record import Record
 from graphplan.graphic.scales import LEGIBLE_MM, LEGIBLE_READS, PLAN_MM, series_choices   # the plans read: p_v a and π a at least this long,
 from graphplan.sheets.compose import FACTORS, Family, choose_levels, coarser, field_of, finer, notes_height
@@ -995,13 +995,16 @@ def _set_rows(nat: Natural, mu: dict[str, float], dsize, factor: float, width: f
     plans likewise, the tables and the notes (rows wrap where too wide). ``sized``: where given,
     (family, μ) → the cell's (w, h) and width → the notes' height, remembered by the caller (the
     same answers as ``nat``'s; ``set_of_sheets`` asks them some 10 000 times)."""
-    cell_of, notes_of = sized or ((lambda fam, m: nat.families[fam].size(m)),
-                                  (lambda w: set_notes_height(nat.notes, w)))
+    cell_of, notes_of = sized[:2] if sized else ((lambda fam, m: nat.families[fam].size(m)),
+                                                  (lambda w: set_notes_height(nat.notes, w)))
+    own_of = sized[2] if sized and len(sized) > 2 else (
+        lambda fam, m: tuple(nat.families[fam].size(m, i) for i in range(nat.count[fam])))
     grids = {}
-    count = nat.count
     for fam in ("velocity", "acceleration"):
-        w, h = cell_of(fam, mu[fam])
-        grids[fam] = [Leaf(f"{fam} {i}", w, h) for i in range(count[fam])]
+        # each plan its own size: in cells as large as the largest (p_v b 106 × 94 mm where most are
+        # 62–79 mm across and 24–85 high) LINK59's and the Watt's A3 sets put 3–4 velocity plans on
+        # a sheet, the four-bar's sheet 3 four plans 17 % drawn on (stop 60)
+        grids[fam] = [Leaf(f"{fam} {i}", w, h) for i, (w, h) in enumerate(own_of(fam, mu[fam]))]
     return set_rows(Leaf("position", *cell_of("position", mu["position"])), Leaf("diagrams", *dsize), grids["velocity"],
                     grids["acceleration"], set_tail([Leaf(name, w, h) for name, w, h in nat.tables[factor]],
                                                     Leaf("notes", notes, notes_of(notes)), stacked, beside), width,
@@ -1018,12 +1021,16 @@ def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], w
     with the tables instead of taking one for itself; or, where the diagrams stand in a row of
     their own, the acceleration plans beside them where that row holds them."""
     def grid(cells_: list[Leaf]) -> list[list[Leaf]]:
-        """The cells as one row that ``flow`` wraps where the room ends (a row cut short by the title
+        """The plans as one row that ``flow`` wraps where the room ends (a row cut short by the title
         block or a sheet's foot goes on in the next line, not as a line of its own: the six-bar's A3
         set put two velocity plans beside the title block and the other two of that row alone atop
-        the next sheet), padded so the last line's columns line up with the full lines'."""
+        the next sheet) — each plan its own size, a line as high as its tallest (equal cells as
+        large as the largest plan left LINK59's A3 sheets 2–4 three or four plans each, 27–39 %
+        drawn on); equal cells padded so the last line's columns line up with the full lines'."""
         if not cells_:
             return []
+        if any((c.w, c.h) != (cells_[0].w, cells_[0].h) for c in cells_):
+            return [list(cells_)]
         k = max(1, int((width + GAP) // (cells_[0].w + GAP)))
         c = cells_[0]
         return [list(cells_) + [Leaf("", c.w, c.h) for _ in range(k - 1)]]
@@ -1035,12 +1042,9 @@ def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], w
         # columns as fit across and rows as fit its height, read on in the rows under it
         first: list[list[Leaf | Grid]] = [[P]]
         if V:
-            c = int((width - P.w + 1e-9) // (V[0].w + GAP))
-            r = int((P.h + GAP + 1e-9) // (V[0].h + GAP))
-            k = min(c * r, len(V)) if c >= 1 and r >= 1 else 0
+            k, c = _beside(P, V, width)
             if k:
-                c = min(c, k)
-                first, V = [[P, Grid(V[:k], c)]], V[k:]
+                first, V = [[P, Grid(V[:k], c, fitted=True)]], V[k:]
         if after:                   # the plans first, the diagrams on a sheet of their own before the tables
             return first + grid(V) + grid(A) + [[D], Shelf(_opened(tail))]
         if A and D.w + sum(GAP + a.w for a in A) <= width + 1e-9 and max(a.h for a in A) <= D.h + 1e-9:
@@ -1050,10 +1054,43 @@ def set_rows(P: Leaf, D: Leaf, V: list[Leaf], A: list[Leaf], tail: list[Leaf], w
         rows = first + grid(V) + [[D]]
     rows += grid(A)
     if A:
-        rows[-1] = [c for c in rows[-1] if c.name] + tail
+        # a shelf (``flow`` breaks it into the lines, or a line of columns, that put the most on the
+        # sheet): row by row, the last line's Table 4 and notes took a sheet of their own (stop 59)
+        last = [c for c in rows[-1] if c.name] + tail
+        rows[-1] = Shelf(last) if len(last) <= SHELF_MOST else last
     else:
         rows.append(Shelf(_opened(tail)))     # the tables and notes a row of their own: broken to fill the sheet
     return rows
+
+
+_BESIDE: dict[tuple, tuple[int, int]] = {}
+
+
+def _beside(P: Leaf, V: list[Leaf], width: float) -> tuple[int, int]:
+    """How many of the first velocity plans stand beside the position plan, and in how many columns:
+    the most whose grid (each column as wide as its widest plan, each row as high as its tallest:
+    ``Grid.fitted``) fits the room across beside the plan and its height, read row by row (once per
+    sizes: a set's search lays its rows out thousands of times)."""
+    key = (P.w, P.h, width, tuple((v.w, v.h) for v in V))
+    if key in _BESIDE:
+        return _BESIDE[key]
+    room = width - P.w - GAP + 1e-9
+    best = (0, 0)
+    for c in range(1, len(V) + 1):
+        most = 0
+        for k in range(c, len(V) + 1):        # a plan more never makes the grid smaller
+            w, h = extent(Grid(V[:k], c, fitted=True))
+            if w > room or h > P.h + 1e-9:
+                break
+            most = k
+        if most > best[0]:
+            best = (most, c)
+        if not most:
+            break                             # c plans do not fit across: more columns do not either
+    if len(_BESIDE) > 10_000:
+        _BESIDE.clear()
+    _BESIDE[key] = best
+    return best
 
 
 def grid_rows(cells_: list[Leaf], k: int) -> list[list[Leaf]]:
@@ -1234,7 +1271,8 @@ def lifted(nat: Natural, short: dict[str, tuple[float, list[float]]], mu: dict[s
 
 def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
     """A set of sheets: the velocity and acceleration plans just legible, the position plan as large
-    as a sheet holds (or a step or two smaller where that saves a sheet), the drawings and tables
+    as a sheet holds (or a step or two smaller where that saves a sheet and its crank is still drawn
+    ``CRANK_MM`` long: never crowded for fewer sheets), the drawings and tables
     flowing over the sheets in reading order — the fewest sheets (qualitatively wrong diagrams
     counted as one more: their larger size factor is taken where it is right; so is a sheet of the
     notes alone, the notes first wrapped wider to avoid it); then each family grown while the set
@@ -1308,6 +1346,12 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
         if w not in notes_memo:
             notes_memo[w] = set_notes_height(nat.notes, w)
         return notes_memo[w]
+    plans_memo: dict[tuple, tuple] = {}
+
+    def own_of(fam: str, mu: float) -> tuple:
+        if (fam, mu) not in plans_memo:
+            plans_memo[fam, mu] = tuple(fams[fam].size(mu, i) for i in range(counts[fam]))
+        return plans_memo[fam, mu]
     for k in set_diagrams(dr, nat, r):
         dsize = diagrams_size(dr, nat, k)
         for factor, after in ((fa, af) for fa in (TABLES, 1.0) for af in (False, True)):
@@ -1325,10 +1369,12 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                 found = None
                 for stacked in (0,) + STACKED:
                     for nw in wide:
-                        tried = counted(_set_rows(nat, mu, dsize, factor, width, after, nw, (cell_of, notes_of),
+                        tried = counted(_set_rows(nat, mu, dsize, factor, width, after, nw, (cell_of, notes_of, own_of),
                                                   stacked), region, keep, later)
-                        if tried is None:     # a drawing larger than a sheet; a stacked block too large: the others
-                            return found if stacked else None
+                        if tried is None:     # a drawing larger than a sheet: none; a stacked block too large:
+                            if not stacked:   # the notes wrapped wider, which are lower (LINK57's A3 at 1:2:
+                                return None   # Table 4 over the 198-mm notes is too tall for a sheet, over
+                            continue          # the notes two columns wide it is not — they stood alone)
                         got = (*tried, nw, stacked)
                         orphan = got[1]
                         # the narrowest notes that take no more sheets (a sheet of the notes alone counted)
@@ -1363,21 +1409,26 @@ def set_of_sheets(dr: Drafter, nat: Natural, f: Form) -> Plan:
                         break
                     mu = {**mu, "position": bigger}
                 _, orphan, nw, stacked = laid(mu)
-                fill = trial(_set_rows(nat, mu, dsize, factor, width, after, nw, (cell_of, notes_of), stacked), region,
+                fill = trial(_set_rows(nat, mu, dsize, factor, width, after, nw, (cell_of, notes_of, own_of), stacked), region,
                              keep, later, own(mu))[2]      # the emptiest sheet's fill: laid out in full for the kept
                 rel = sum(math.log(fams[fam].rel(mu[fam])) for fam in FAMILIES) + drawn_share(dr, k)
-                # qualitatively wrong diagrams weigh like one more sheet: a larger drawing that is
-                # right is taken where it costs a sheet at most; so does a crowded position plan
-                # (its crank shorter than CRANK_MM where a sheet holds a larger plan: the A3
-                # coulisse, whose crank is 28 mm at the largest, was drawn at 1:10, 11 mm), a
-                # diagram lower than DIAGRAM_MM (``flat``) and a sheet holding the notes alone;
-                # of as many, the larger drawings (then the fuller emptiest sheet); and a value read
-                # off a vector shorter than SHORT_MM that larger plans would lift (``lifted``)
+                # the first sheet keeps its main drawing (LAYOUT.md; the A1's ``main_larger``): a
+                # crowded position plan — its crank shorter than CRANK_MM where a sheet holds a
+                # larger plan — is never traded for fewer sheets (it weighed one sheet: LINK57's A3
+                # set took 1:4, its twelve positions' labels piled up, for a sheet fewer than 1:2;
+                # the A3 coulisse, whose crank is 28 mm at the largest, had been drawn at 1:10, 11 mm).
+                # Then qualitatively wrong diagrams weigh like one more sheet: a larger drawing that
+                # is right is taken where it costs a sheet at most; so do a diagram lower than
+                # DIAGRAM_MM (``flat``) and a sheet holding the notes alone; of as many, the larger
+                # drawings (then the fuller emptiest sheet); and a value read off a vector shorter
+                # than SHORT_MM that larger plans would lift (``lifted``)
                 wrong = 0 if dr.diagrams_right(k) else 1
                 small = int(fams["position"].drawn(mu["position"]) < CRANK_MM - 1e-9 and mu["position"] > top)
                 low = flat(dr, k)
-                key = (count + wrong + small + orphan + low + lifted(nat, short, mu), wrong,
-                       small, low, int(fill < SPARSE), -(factor == TABLES), -round(rel, 6),
+                # of as many, no sheet of the notes alone: a shelf's columns fill a sheet with the
+                # tables and can leave the notes to the next (LINK57's A3 sheet 5, stop 59)
+                key = (small, count + wrong + orphan + low + lifted(nat, short, mu), orphan, wrong,
+                       low, int(fill < SPARSE), -(factor == TABLES), -round(rel, 6),
                        -round(fill, 1))
                 if best is None or key < best[0]:
                     best = (key, Plan(mu, k, factor, "set", 1, 1, 1, count, after=after, notes=nw, stacked=stacked))
