@@ -171,3 +171,41 @@ def test_link60_work_flywheel_and_motor_by_the_energy_method(link60, truth):
     mean = (speeds.max() + speeds.min()) / 2
     assert (speeds.max() - speeds.min()) / mean == pytest.approx(DELTA, rel=2e-3)
     assert mean == pytest.approx(16.706, abs=2e-3)          # less slip than rated: 6.35 % over πn/30
+
+
+# -- a set's note: the A1 sheet's |kl| as that sheet draws it -----------------------------------------------
+
+def _kl_lettered(sheet) -> float:
+    """|kl| as the energy–mass diagram letters it ("|kl| = 113 mm"), on the sheet or the set."""
+    import re
+    for page in sheet.pages:
+        for p in page.placed:
+            for it in p.record.items if p.name == "wittenbauer" else ():
+                m = it.kind == "text" and re.search(r"\|kl\| = ([\d.]+)", it.text or "")
+                if m:
+                    return float(m.group(1))
+    raise AssertionError("no |kl| lettered")
+
+
+@pytest.mark.slow                     # LINK53's A1 sheet and A3 set composed: ~1 min of CPU
+def test_a_sets_note_gives_the_kl_the_a1_sheet_draws():
+    """LINK53's A3 set reads |kl| = 60.5 mm; its note compared it with the set search's target, 74 mm — the
+    A1 sheet's |kl| at the classical composition's scales — while the A1 sheet draws ΔT at its own finer
+    μ_T = 1 J/mm and letters |kl| = 113 mm. The note's «(Y mm on the A1 sheet)» is the A1 sheet's own
+    lettering, and what the note says of it holds: no scale that fits an A3 sheet reads |kl| ≥ Y."""
+    import re
+
+    from conftest import scene_sheet
+    from review_scenes import LINK53
+    on_a1 = _kl_lettered(scene_sheet(LINK53, "dynamics", "A1", "en"))
+    sheet = scene_sheet(LINK53, "dynamics", "A3", "en")
+    on_a3 = _kl_lettered(sheet)
+    words = [it.text for page in sheet.pages for p in page.placed if p.name == "notes"
+             for it in p.record.items if it.kind == "text" and it.text]
+    text = " ".join(" ".join(words).split())
+    said = re.search(r"\|kl\| = ([\d.]+) mm \(([\d.]+) mm on the A1 sheet\): no scale \(L = (\d+)…(\d+) mm\) that "
+                     r"fits an A3 sheet gives \|kl\| ≥ ([\d.]+) mm", text)
+    assert said, text
+    kl, a1, low, top, claim = (float(g) for g in said.groups())
+    assert (kl, a1, claim) == (on_a3, on_a1, on_a1) and on_a3 < on_a1
+    assert on_a1 > 100.0                              # 113 mm: ΔT at μ_T = 1 J/mm, not the classical 74 mm

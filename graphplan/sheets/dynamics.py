@@ -348,11 +348,14 @@ def energy_scales_note(s: dict, lang: str) -> str:
 
 
 def short_note(short: Shortfall, lang: str) -> str:
-    """The notes' line on a set's |kl| short of the A1 sheet's: both |kl| and why (``Shortfall``)."""
+    """The notes' line on a set's |kl| short of the A1 sheet's: both |kl| and why (``Shortfall``).
+    The A1 sheet's |kl| is the one it draws (``Shortfall.a1``: ΔT at its own finer μ_T where it
+    has room), not the search's classical target; "tall" then needs as much more height."""
     w = WORDS[lang]
-    fmt = {"kl": num(short.kl, lang), "a1": num(short.target, lang), "fmt": short.format,
-           "need": num(math.floor(short.need), lang), "room": num(short.room, lang), "low": num(short.low, lang),
-           "top": num(short.top, lang)}
+    a1 = short.a1
+    fmt = {"kl": num(short.kl, lang), "a1": num(a1, lang), "fmt": short.format,
+           "need": num(math.floor(short.need + (a1 - short.target if short.kind == "tall" else 0.0)), lang),
+           "room": num(short.room, lang), "low": num(short.low, lang), "top": num(short.top, lang)}
     return w["short"].format(**fmt) + w["short_" + short.kind].format(**fmt)
 
 
@@ -1164,7 +1167,8 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
             if why is not None:
                 if len(_SHORT) >= 64:
                     _SHORT.pop(next(iter(_SHORT)))
-                _SHORT[_construction_key(st, dyn, f, args)] = Shortfall(kl(L, size), target, f.name, *why)
+                _SHORT[_construction_key(st, dyn, f, args)] = Shortfall(kl(L, size), target, f.name, *why,
+                                                                        drawn=a1_drawn_kl(st, dyn, args))
     def band_length(L_: float, size_: float) -> float:     # the band's longest φ axis a later sheet holds
         return next((g for g in _lengths(L_) if on_a_page(Leaf("band", *band_least(built(L_, size_), g)))
                      and on_a_page(band_leaf(L_, size_, g))), _lengths(L_)[-1])
@@ -1266,6 +1270,18 @@ def _a1_kl(st: Study, dyn, f: Form, args) -> float | None:
     return abs(_built(dyn, args, L, size).kl)
 
 
+def a1_drawn_kl(st: Study, dyn, args) -> float:
+    """|kl| of the energy–mass diagram as the A1 sheet draws it: at its construction's scales and
+    ΔT's own finer μ_T where it has one (``construction``, ``finer_energy``) — what a set's note
+    compares with (``short_note``). ``_a1_kl``, the set's search target, reads the classical
+    composition's scales (the slotter's A2 set aimed at the larger diagram lost its order of the
+    work); since stop 59 the A1 sheet may draw ΔT finer, and that note understated its |kl| (the
+    agitator: 40,5 mm against the 64 drawn). The whole A1 search runs: only where a set is short."""
+    A1 = form("A1")
+    c = construction(st, dyn, A1, args)
+    return abs(_built(dyn, args, c[0], c[1], c[7]).kl)
+
+
 def _classical_scales(st: Study, dyn, f: Form, args) -> tuple[float, float]:
     """``construction_scales`` without the larger energy–mass diagram (``larger``): the scales the set's
     target |kl| is read at (the slotter's A2 set aimed at the A1 sheet's |kl| at 1.5 no longer held
@@ -1294,6 +1310,12 @@ class Shortfall:
     room: float = 0.0
     low: float = 0.0
     top: float = 0.0
+    drawn: float | None = None      # |kl| the A1 sheet draws (``a1_drawn_kl``), where it is not ``target``
+
+    @property
+    def a1(self) -> float:
+        """|kl| on the A1 sheet as it is drawn: ``drawn``, else the search's ``target``."""
+        return self.target if self.drawn is None else max(self.drawn, self.target)
 
 
 _SHORT: dict[tuple, Shortfall] = {}
