@@ -209,3 +209,44 @@ def test_a_sets_note_gives_the_kl_the_a1_sheet_draws():
     kl, a1, low, top, claim = (float(g) for g in said.groups())
     assert (kl, a1, claim) == (on_a3, on_a1, on_a1) and on_a3 < on_a1
     assert on_a1 > 100.0                              # 113 mm: ΔT at μ_T = 1 J/mm, not the classical 74 mm
+
+
+# -- the band's nook run down to the field's foot beside the title block ------------------------------------
+
+def _bare_square(sheet, side: float, right: float) -> bool:
+    """Whether the field left of ``right`` (mm) holds an empty ``side`` × ``side`` mm square: no drawing's,
+    table's or note's lettered bounds in it (a 1-mm grid, prefix sums)."""
+    from graphplan.sheets.compose import field_of
+    page = sheet.pages[0]
+    x0, y0, x1, y1 = field_of(page.form)
+    x1 = min(x1, right)
+    nx, ny = int(x1 - x0), int(y1 - y0)
+    used = np.zeros((ny, nx), dtype=np.int32)
+    for p in page.placed:
+        b = p.record.bounds()
+        i0, i1 = max(0, int(math.floor(b[1] - y0))), min(ny, int(math.ceil(b[3] - y0)))
+        j0, j1 = max(0, int(math.floor(b[0] - x0))), min(nx, int(math.ceil(b[2] - x0)))
+        used[i0:i1, j0:j1] = 1
+    s = np.pad(used.cumsum(0).cumsum(1), ((1, 0), (1, 0)))
+    k = int(side)
+    windows = s[k:, k:] - s[:-k, k:] - s[k:, :-k] + s[:-k, :-k]
+    return bool((windows == 0).any())
+
+
+@pytest.mark.slow                     # LINK60's A1 dynamics sheet composed: ~25 s of CPU
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_link60s_nook_runs_down_beside_the_title_block(lang):
+    """LINK60's A1 sheet ("nook": the band at the right over the title block, ω(φ) and the notes in the band's
+    nook under ΔT(φ)) set ω(φ) 140 mm tall in a nook reaching 19 mm past the title block's left side, and
+    ~300 × 170 mm of paper stood bare under it, between the tables and the title block. The nook narrowed
+    to that side runs down to the field's foot: ω(φ) grows (now about as tall as wide) and no 100 × 100 mm
+    square of the field left of the title block is bare; ω(φ) and the notes stay left of the title block."""
+    from conftest import scene_sheet
+    from graphplan.sheets.compose import defects, keep_out
+    sheet = scene_sheet(LINK60, "dynamics", "A1", lang)
+    keep = keep_out(sheet.pages[0].form)
+    assert not _bare_square(sheet, 100.0, keep[0])
+    got = {p.name: p.record.bounds() for p in sheet.pages[0].placed}
+    speed = got["speed"]
+    assert speed[3] - speed[1] > 200.0 and max(got["speed"][2], got["notes"][2]) <= keep[0] + 1e-6
+    assert defects(sheet) == []

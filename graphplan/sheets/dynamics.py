@@ -1710,19 +1710,31 @@ def _speed_nooked(fw: Flywheel, lang: str, boxes: dict[str, tuple], band_box: tu
     (``keep``: the band stands over the title block, the paper under the nook is no one's — the
     shaper's ~235 × 100 mm): ω(φ) grown into what the notes leave of it, the two one under another
     with the spare height in three equal parts over, between and under them; the motor's sentence
-    with the notes where it still fits."""
+    with the notes where it still fits. Where the nook reaches past the title block's left side, that
+    nook narrowed to the side and run down to the field's foot too, whichever draws ω(φ) larger."""
     dx, dy = _band_shift(boxes, band_box)
     got = speed_nook(boxes, small, lines)
     n, w = got if got is not None else (nooks(boxes)[0], nooks(boxes)[0][2] - nooks(boxes)[0][0])
     box = (n[0] + dx, n[1] + dy, n[0] + dx + w, n[3] + dy)
-    if box[2] <= keep[0] + 1e-9:
-        box = (box[0], region[1], box[2], box[3])
-    room = box[3] - box[1] - GAP
-    lines = with_motor(lines, fuller, room - small.h, w)
-    nrec = note_block(lines, w)
-    rec = _speed(fw, lang, (w, room - _wh(nrec)[1]), NOOK_ASPECT)
-    if _wh(rec)[0] > w + 1e-6 or _wh(rec)[1] > room - _wh(nrec)[1] + 1e-6:
-        rec = small.record
+    boxes_ = [(box[0], region[1], box[2], box[3]) if box[2] <= keep[0] + 1e-9 else box]
+    if box[2] > keep[0] + 1e-9 and keep[0] - box[0] >= max(NOOK_SPEED, small.w) - 1e-9:
+        # the nook reaches past the title block's left side (LINK60: by 24 mm, and ~290 × 170 mm of paper
+        # stood bare under it, beside the tables): narrowed to that side it runs down to the field's foot
+        boxes_.append((box[0], region[1], keep[0], box[3]))
+    best = None
+    for b in boxes_:
+        w_, room = b[2] - b[0], b[3] - b[1] - GAP
+        lines_ = with_motor(lines, fuller, room - small.h, w_)
+        nrec_ = note_block(lines_, w_)
+        if best is not None and _wh(nrec_)[1] + GAP + small.h > room + 1e-9:
+            continue
+        rec_ = _speed(fw, lang, (w_, room - _wh(nrec_)[1]), NOOK_ASPECT)
+        if _wh(rec_)[0] > w_ + 1e-6 or _wh(rec_)[1] > room - _wh(nrec_)[1] + 1e-6:
+            rec_ = small.record
+        area = _wh(rec_)[0] * _wh(rec_)[1]
+        if best is None or area > best[0] * (1 + 1e-6):     # ω(φ) the larger (LAYOUT.md), else as it was
+            best = (area, b, rec_, nrec_)
+    _, box, rec, nrec = best
     sh, nh = _wh(rec)[1], _wh(nrec)[1]
     third = max(0.0, box[3] - box[1] - sh - nh) / 3        # the spare height: over, between and under them
     sb = (box[0], box[3] - third - sh, box[2], box[3] - third)
