@@ -349,12 +349,11 @@ def energy_scales_note(s: dict, lang: str) -> str:
 
 def short_note(short: Shortfall, lang: str) -> str:
     """The notes' line on a set's |kl| short of the A1 sheet's: both |kl| and why (``Shortfall``).
-    The A1 sheet's |kl| is the one it draws (``Shortfall.a1``: ΔT at its own finer μ_T where it
-    has room), not the search's classical target; "tall" then needs as much more height."""
+    The A1 sheet's |kl| is the one it draws (``Shortfall.a1``: ΔT at its own finer μ_T, or its larger
+    diagram, where it has room), not the search's classical target; the reason is taken at it."""
     w = WORDS[lang]
-    a1 = short.a1
-    fmt = {"kl": num(short.kl, lang), "a1": num(a1, lang), "fmt": short.format,
-           "need": num(math.floor(short.need + (a1 - short.target if short.kind == "tall" else 0.0)), lang),
+    fmt = {"kl": num(short.kl, lang), "a1": num(short.a1, lang), "fmt": short.format,
+           "need": num(math.floor(short.need), lang),
            "room": num(short.room, lang), "low": num(short.low, lang), "top": num(short.top, lang)}
     return w["short"].format(**fmt) + w["short_" + short.kind].format(**fmt)
 
@@ -1167,8 +1166,10 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
             if why is not None:
                 if len(_SHORT) >= 64:
                     _SHORT.pop(next(iter(_SHORT)))
+                drawn = max(a1_drawn_kl(st, dyn, args), target)      # what the note compares with; at it
+                why = _too_tall(sizes, drawn, args.precision, f) or why   # the band may be past any sheet
                 _SHORT[_construction_key(st, dyn, f, args)] = Shortfall(kl(L, size), target, f.name, *why,
-                                                                        drawn=a1_drawn_kl(st, dyn, args))
+                                                                        drawn=drawn)
     def band_length(L_: float, size_: float) -> float:     # the band's longest φ axis a later sheet holds
         return next((g for g in _lengths(L_) if on_a_page(Leaf("band", *band_least(built(L_, size_), g)))
                      and on_a_page(band_leaf(L_, size_, g))), _lengths(L_)[-1])
@@ -1346,15 +1347,22 @@ def _reach(sizes, fits, kl, target: float, precision: float, f: Form, found: tup
     precision/2 + its shortest φ axis + 32 mm tall (``band_least``): where no sheet of ``f`` is that
     tall, no pair is tried."""
     Ls = _set_grid(sizes)
-    x0, y0, x1, y1 = field_of(f)
-    need = target - precision / 2 + min(_lengths(Ls[-1])) + 32.0
-    if need > y1 - y0 + 1e-9:
-        return (*found, ("tall", need, y1 - y0))
+    tall = _too_tall(sizes, target, precision, f)
+    if tall is not None:
+        return (*found, tall)
     for L in Ls:
         for size in SET_SIZES:
             if kl(L, size) >= target - 1e-9 and fits(L, size):
                 return L, size, None
     return (*found, ("none", 0.0, 0.0, Ls[-1], Ls[0]))
+
+
+def _too_tall(sizes, target: float, precision: float, f: Form) -> tuple[str, float, float] | None:
+    """("tall", need, room) where at |kl| ≥ ``target`` the band (ΔT's axis spans k and l: at least target −
+    precision/2 + its shortest φ axis + 32 mm, ``band_least``) is taller than a sheet of ``f``; else None."""
+    x0, y0, x1, y1 = field_of(f)
+    need = target - precision / 2 + min(_lengths(_set_grid(sizes)[-1])) + 32.0
+    return ("tall", need, y1 - y0) if need > y1 - y0 + 1e-9 else None
 
 
 def _set_scales(sizes, fits, kl, target: float | None, fallback: tuple[float, float]) -> tuple[float, float]:
