@@ -1276,8 +1276,9 @@ def a1_drawn_kl(st: Study, dyn, args) -> float:
     ΔT's own finer μ_T where it has one (``construction``, ``finer_energy``) — what a set's note
     compares with (``short_note``). ``_a1_kl``, the set's search target, reads the classical
     composition's scales (the slotter's A2 set aimed at the larger diagram lost its order of the
-    work); since stop 59 the A1 sheet may draw ΔT finer, and that note understated its |kl| (the
-    agitator: 40,5 mm against the 64 drawn). The whole A1 search runs: only where a set is short."""
+    work); the A1 sheet draws ΔT finer since stop 59, or the larger diagram, and the note understated
+    its |kl| (LINK53's A3 set: 74 mm against the 113 drawn; the shaper's: 171.5 against 217.5). The
+    whole A1 search runs: only where a set is short."""
     A1 = form("A1")
     c = construction(st, dyn, A1, args)
     return abs(_built(dyn, args, c[0], c[1], c[7]).kl)
@@ -1726,7 +1727,7 @@ def _speed_nooked(fw: Flywheel, lang: str, boxes: dict[str, tuple], band_box: tu
     box = (n[0] + dx, n[1] + dy, n[0] + dx + w, n[3] + dy)
     boxes_ = [(box[0], region[1], box[2], box[3]) if box[2] <= keep[0] + 1e-9 else box]
     if box[2] > keep[0] + 1e-9 and keep[0] - box[0] >= max(NOOK_SPEED, small.w) - 1e-9:
-        # the nook reaches past the title block's left side (LINK60: by 24 mm, and ~290 × 170 mm of paper
+        # the nook reaches past the title block's left side (LINK60: by 19 mm, and ~300 × 170 mm of paper
         # stood bare under it, beside the tables): narrowed to that side it runs down to the field's foot
         boxes_.append((box[0], region[1], keep[0], box[3]))
     best = None
