@@ -8827,3 +8827,74 @@ delta = 0.05
 efficiency = 0.9
 synchronous_rpm = 750
 '''
+
+
+# dyn60 (stop 60): its own dynamics check — a beam pumping unit: a crank-rocker four-bar whose balanced beam O2B
+# runs on past its pivot to the horse head D; the rod load 3000 N at D against its motion on the slow swing; a
+# 1000-rpm motor that alone holds δ (no flywheel needed with it), the tangents too flat for a protractor.
+DYN60_PUMPJACK = '''
+title = "Важільний механізм верстата-качалки"
+title_en = "Beam pumping unit linkage"
+designation = "ТММ.КП.60.010"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-60"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [-0.40, 0.55]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.12
+rpm = 60
+direction = "ccw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.55
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.40
+mass = 24
+inertia = 1.28
+points = { S3 = 0.0, D = -1.0 }
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 90
+output = "O2B"
+
+[loads]
+g = 9.81
+mass_per_length = 30
+inertia_factor = 0.1
+
+[[force]]
+point = "D"
+magnitude = 3000
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 1000
+'''

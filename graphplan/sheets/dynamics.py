@@ -348,11 +348,13 @@ def energy_scales_note(s: dict, lang: str) -> str:
 
 
 def short_note(short: Shortfall, lang: str) -> str:
-    """The notes' line on a set's |kl| short of the A1 sheet's: both |kl| and why (``Shortfall``)."""
+    """The notes' line on a set's |kl| short of the A1 sheet's: both |kl| and why (``Shortfall``).
+    The A1 sheet's |kl| is the one it draws (``Shortfall.a1``: ΔT at its own finer μ_T, or its larger
+    diagram, where it has room), not the search's classical target; the reason is taken at it."""
     w = WORDS[lang]
-    fmt = {"kl": num(short.kl, lang), "a1": num(short.target, lang), "fmt": short.format,
-           "need": num(math.floor(short.need), lang), "room": num(short.room, lang), "low": num(short.low, lang),
-           "top": num(short.top, lang)}
+    fmt = {"kl": num(short.kl, lang), "a1": num(short.a1, lang), "fmt": short.format,
+           "need": num(math.floor(short.need), lang),
+           "room": num(short.room, lang), "low": num(short.low, lang), "top": num(short.top, lang)}
     return w["short"].format(**fmt) + w["short_" + short.kind].format(**fmt)
 
 
@@ -1193,7 +1195,10 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
             if why is not None:
                 if len(_SHORT) >= 64:
                     _SHORT.pop(next(iter(_SHORT)))
-                _SHORT[_construction_key(st, dyn, f, args)] = Shortfall(kl(L, size), target, f.name, *why)
+                drawn = max(a1_drawn_kl(st, dyn, args), target)      # what the note compares with; at it
+                why = _too_tall(sizes, drawn, args.precision, f) or why   # the band may be past any sheet
+                _SHORT[_construction_key(st, dyn, f, args)] = Shortfall(kl(L, size), target, f.name, *why,
+                                                                        drawn=drawn)
     def band_length(L_: float, size_: float) -> float:     # the band's longest φ axis a later sheet holds
         return next((g for g in _lengths(L_) if on_a_page(Leaf("band", *band_least(built(L_, size_), g)))
                      and on_a_page(band_leaf(L_, size_, g))), _lengths(L_)[-1])
@@ -1295,6 +1300,19 @@ def _a1_kl(st: Study, dyn, f: Form, args) -> float | None:
     return abs(_built(dyn, args, L, size).kl)
 
 
+def a1_drawn_kl(st: Study, dyn, args) -> float:
+    """|kl| of the energy–mass diagram as the A1 sheet draws it: at its construction's scales and
+    ΔT's own finer μ_T where it has one (``construction``, ``finer_energy``) — what a set's note
+    compares with (``short_note``). ``_a1_kl``, the set's search target, reads the classical
+    composition's scales (the slotter's A2 set aimed at the larger diagram lost its order of the
+    work); the A1 sheet draws ΔT finer since stop 59, or the larger diagram, and the note understated
+    its |kl| (LINK53's A3 set: 74 mm against the 113 drawn; the shaper's: 171.5 against 217.5). The
+    whole A1 search runs: only where a set is short."""
+    A1 = form("A1")
+    c = construction(st, dyn, A1, args)
+    return abs(_built(dyn, args, c[0], c[1], c[7]).kl)
+
+
 def _classical_scales(st: Study, dyn, f: Form, args) -> tuple[float, float]:
     """``construction_scales`` without the larger energy–mass diagram (``larger``): the scales the set's
     target |kl| is read at (the slotter's A2 set aimed at the A1 sheet's |kl| at 1.5 no longer held
@@ -1323,6 +1341,12 @@ class Shortfall:
     room: float = 0.0
     low: float = 0.0
     top: float = 0.0
+    drawn: float | None = None      # |kl| the A1 sheet draws (``a1_drawn_kl``), where it is not ``target``
+
+    @property
+    def a1(self) -> float:
+        """|kl| on the A1 sheet as it is drawn: ``drawn``, else the search's ``target``."""
+        return self.target if self.drawn is None else max(self.drawn, self.target)
 
 
 _SHORT: dict[tuple, Shortfall] = {}
@@ -1353,15 +1377,22 @@ def _reach(sizes, fits, kl, target: float, precision: float, f: Form, found: tup
     precision/2 + its shortest φ axis + 32 mm tall (``band_least``): where no sheet of ``f`` is that
     tall, no pair is tried."""
     Ls = _set_grid(sizes)
-    x0, y0, x1, y1 = field_of(f)
-    need = target - precision / 2 + min(_lengths(Ls[-1])) + 32.0
-    if need > y1 - y0 + 1e-9:
-        return (*found, ("tall", need, y1 - y0))
+    tall = _too_tall(sizes, target, precision, f)
+    if tall is not None:
+        return (*found, tall)
     for L in Ls:
         for size in SET_SIZES:
             if kl(L, size) >= target - 1e-9 and fits(L, size):
                 return L, size, None
     return (*found, ("none", 0.0, 0.0, Ls[-1], Ls[0]))
+
+
+def _too_tall(sizes, target: float, precision: float, f: Form) -> tuple[str, float, float] | None:
+    """("tall", need, room) where at |kl| ≥ ``target`` the band (ΔT's axis spans k and l: at least target −
+    precision/2 + its shortest φ axis + 32 mm, ``band_least``) is taller than a sheet of ``f``; else None."""
+    x0, y0, x1, y1 = field_of(f)
+    need = target - precision / 2 + min(_lengths(_set_grid(sizes)[-1])) + 32.0
+    return ("tall", need, y1 - y0) if need > y1 - y0 + 1e-9 else None
 
 
 def _set_scales(sizes, fits, kl, target: float | None, fallback: tuple[float, float]) -> tuple[float, float]:
@@ -1717,19 +1748,31 @@ def _speed_nooked(fw: Flywheel, lang: str, boxes: dict[str, tuple], band_box: tu
     (``keep``: the band stands over the title block, the paper under the nook is no one's — the
     shaper's ~235 × 100 mm): ω(φ) grown into what the notes leave of it, the two one under another
     with the spare height in three equal parts over, between and under them; the motor's sentence
-    with the notes where it still fits."""
+    with the notes where it still fits. Where the nook reaches past the title block's left side, that
+    nook narrowed to the side and run down to the field's foot too, whichever draws ω(φ) larger."""
     dx, dy = _band_shift(boxes, band_box)
     got = speed_nook(boxes, small, lines)
     n, w = got if got is not None else (nooks(boxes)[0], nooks(boxes)[0][2] - nooks(boxes)[0][0])
     box = (n[0] + dx, n[1] + dy, n[0] + dx + w, n[3] + dy)
-    if box[2] <= keep[0] + 1e-9:
-        box = (box[0], region[1], box[2], box[3])
-    room = box[3] - box[1] - GAP
-    lines = with_motor(lines, fuller, room - small.h, w)
-    nrec = note_block(lines, w)
-    rec = _speed(fw, lang, (w, room - _wh(nrec)[1]), NOOK_ASPECT)
-    if _wh(rec)[0] > w + 1e-6 or _wh(rec)[1] > room - _wh(nrec)[1] + 1e-6:
-        rec = small.record
+    boxes_ = [(box[0], region[1], box[2], box[3]) if box[2] <= keep[0] + 1e-9 else box]
+    if box[2] > keep[0] + 1e-9 and keep[0] - box[0] >= max(NOOK_SPEED, small.w) - 1e-9:
+        # the nook reaches past the title block's left side (LINK60: by 19 mm, and ~300 × 170 mm of paper
+        # stood bare under it, beside the tables): narrowed to that side it runs down to the field's foot
+        boxes_.append((box[0], region[1], keep[0], box[3]))
+    best = None
+    for b in boxes_:
+        w_, room = b[2] - b[0], b[3] - b[1] - GAP
+        lines_ = with_motor(lines, fuller, room - small.h, w_)
+        nrec_ = note_block(lines_, w_)
+        if best is not None and _wh(nrec_)[1] + GAP + small.h > room + 1e-9:
+            continue
+        rec_ = _speed(fw, lang, (w_, room - _wh(nrec_)[1]), NOOK_ASPECT)
+        if _wh(rec_)[0] > w_ + 1e-6 or _wh(rec_)[1] > room - _wh(nrec_)[1] + 1e-6:
+            rec_ = small.record
+        area = _wh(rec_)[0] * _wh(rec_)[1]
+        if best is None or area > best[0] * (1 + 1e-6):     # ω(φ) the larger (LAYOUT.md), else as it was
+            best = (area, b, rec_, nrec_)
+    _, box, rec, nrec = best
     sh, nh = _wh(rec)[1], _wh(nrec)[1]
     third = max(0.0, box[3] - box[1] - sh - nh) / 3        # the spare height: over, between and under them
     sb = (box[0], box[3] - third - sh, box[2], box[3] - third)
