@@ -750,11 +750,12 @@ def _o_min_note(apart: float, lang: str) -> str:
 
 
 def _chosen_R0(sol, g, lang: str) -> str:
-    """The letter of |OC₀| on a translating follower's phase diagram: «R_0 = 39 мм», the radius taken,
-    where it is over the smallest read off the diagram — O is then the centre chosen in the region, not
-    its vertex (review 52: O, 2 mm under the vertex, was read as drawn at the smallest R₀ = 38,2 while the
-    profile took 39 mm); else «R_0»."""
-    if sol.cam.rocking or not math.isfinite(g.R0_drawn) or abs(sol.geometry.R0 - g.R0_drawn) <= 1e-9:
+    """The letter of |OC₀| on the phase diagram: «R_0 = 39 мм», the radius taken, where it is over the
+    smallest read off the diagram — O is then the centre chosen in the region, not its vertex (review 52:
+    O, 2 mm under the vertex, was read as drawn at the smallest R₀ = 38,2 while the profile took 39 mm);
+    a rocking follower's too (stop 60: CAM60's |OC₀| drawn at the 55 mm taken, O_min 1,6 mm from O, was
+    lettered «R_0» alone under the caption «найменший і прийнятий R_0»); else «R_0»."""
+    if not math.isfinite(g.R0_drawn) or abs(sol.geometry.R0 - g.R0_drawn) <= 1e-9:
         return "R_0"
     from graphplan.util.words import num
     return f"R_0 = {num(sol.geometry.R0 * 1000.0, lang, 3)} {'мм' if lang == 'uk' else 'mm'}"
