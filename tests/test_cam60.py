@@ -117,3 +117,20 @@ def test_cam60_phase_diagram_letters_r0_with_the_radius_taken(cam60, lang):
     assert abs(q - p) * mu == pytest.approx(55.0, abs=1e-6)
     texts = [q.text for q in rec.items if q.kind == "text"]
     assert f"R_0 = 55 {'мм' if lang == 'uk' else 'mm'}" in texts and "R_0" not in texts
+
+
+@pytest.mark.parametrize("row", [7.0, 6.5])
+def test_cam60_table_at_closer_rows_keeps_its_header_clear(cam60, row):
+    """Table 1 at 3.5-mm letters in the closer rows the sets now take (stop 60): the header's «y_{dψ/dφ}, мм»,
+    its subscript's φ tail 1.79 mm under the baseline, at least RULE_CLEAR (0.8 mm) over the thick rule under
+    the header — measured off the record — and no collision by the sheets' own check."""
+    from graphplan.drawing.labels import collisions
+    from graphplan.drawing.tables import RULE_CLEAR
+    from graphplan.sheets.cam import positions_table
+    cam, sol, g, doc = cam60
+    rec = positions_table(doc, "uk", row, 3.5)
+    ys = sorted({p.points[0][1] for p in rec.items if p.kind == "segment" and p.points[0][1] == p.points[1][1]},
+                reverse=True)
+    (tail,) = [p.ink() for p in rec.items if p.kind == "text" and p.text == "y_{dψ/dφ}, мм"]
+    assert tail[1] - ys[1] >= RULE_CLEAR - 1e-9 and ys[0] - tail[3] >= RULE_CLEAR - 1e-9
+    assert collisions(rec) == []
