@@ -13,9 +13,10 @@ import numpy as np
 import pytest
 
 from camfixtures import cam_fixture
-from review_scenes import CAM60
+from review_scenes import CAM60, CG60_CAM_NO_DWELL
 
 cam60 = cam_fixture("cam60", CAM60, 12)
+nodwell = cam_fixture("nodwell", CG60_CAM_NO_DWELL, 10)
 
 A, L, SWING = 130.0, 100.0, math.radians(20.0)       # mm, mm, rad
 RISE, FAR, RET = (math.radians(x) for x in (120.0, 60.0, 100.0))
@@ -61,7 +62,7 @@ def _least() -> float:
         th = np.abs(_theta(R0, PHI))
         return max(th[ON[0]].max() / ALLOWED[0], th[ON[1]].max() / ALLOWED[1])
     lo, hi = A - L + 1e-6, A + L - 1e-6
-    scan = np.linspace(lo, hi, 400)
+    scan = np.linspace(lo, hi, 120)
     k = next(i for i, R in enumerate(scan) if worst(R) <= 1.0)
     lo, hi = scan[k - 1], scan[k]
     for _ in range(60):
@@ -134,3 +135,40 @@ def test_cam60_table_at_closer_rows_keeps_its_header_clear(cam60, row):
     (tail,) = [p.ink() for p in rec.items if p.kind == "text" and p.text == "y_{dψ/dφ}, мм"]
     assert tail[1] - ys[1] >= RULE_CLEAR - 1e-9 and ys[0] - tail[3] >= RULE_CLEAR - 1e-9
     assert collisions(rec) == []
+
+
+def test_cg60_no_dwell_cam_auto_offset_and_base_radius_by_closed_forms(nodwell):
+    """cg60's own cam (a cycloidal rise of 150° straight into a parabolic return of 120°, h = 40 mm, [ϑ] 30°/35°,
+    "auto" offset, counter-clockwise): tg ϑ = (ds/dφ − e)/(s0 + s) on a 0.005° grid, R0 by bisection at each
+    offset; the smallest R0 over e lies at e* = 0.437 mm (35.179 mm), the program's e is the draftsman's tenth
+    of a millimetre nearest it, 0.4 mm, where the least R0 is 35.243 mm (the return binds at its middle,
+    −35° at φ = 210°); taken 36 mm: the rise's largest ϑ 29.62° at φ = 63.89°, the return's −34.58° at 210°."""
+    cam, sol, g, doc = nodwell
+    H, rise, ret = 40.0, math.radians(150.0), math.radians(120.0)
+    phi = np.linspace(0.0, rise + ret, 54001)
+    up = phi <= rise
+    u = np.where(up, phi / rise, (phi - rise) / ret)
+    s = np.where(up, H * (u - np.sin(2 * np.pi * u) / (2 * np.pi)), np.where(u < 0.5, H * (1 - 2 * u * u), 2 * H * (1 - u) ** 2))
+    v = np.where(up, H / rise * (1 - np.cos(2 * np.pi * u)), np.where(u < 0.5, -4 * H * u, -4 * H * (1 - u)) / ret)
+
+    def theta(R0, e):
+        return np.degrees(np.arctan((v - e) / (np.sqrt(R0 * R0 - e * e) + s)))
+
+    def least(e):
+        lo, hi = abs(e) + 1e-6, 300.0
+        for _ in range(36):
+            mid = (lo + hi) / 2
+            th = np.abs(theta(mid, e))
+            lo, hi = (lo, mid) if max(th[up].max() / 30.0, th[~up].max() / 35.0) <= 1.0 else (mid, hi)
+        return hi
+    grid = {round(e, 1): least(e) for e in np.arange(-0.5, 1.51, 0.1)}    # R0(e) has one least
+    best = min(grid, key=grid.get)
+    assert doc["offset_m"] * 1000 == pytest.approx(best, abs=1e-9) == pytest.approx(0.4)
+    assert doc["base_radius_min_m"] * 1000 == pytest.approx(grid[best], abs=2e-3)
+    assert doc["base_radius_min_m"] * 1000 == pytest.approx(35.243, abs=2e-3)
+    assert doc["base_radius_m"] == pytest.approx(0.036)
+    th = theta(36.0, 0.4)
+    for name, m in (("rise", up), ("return", ~up)):
+        k = int(np.argmax(np.abs(th[m])))
+        assert doc["pressure_angle_extreme_deg"][name] == pytest.approx(th[m][k], abs=0.01)
+        assert doc["pressure_angle_extreme_phi_deg"][name] == pytest.approx(math.degrees(phi[m][k]), abs=0.05)
