@@ -172,3 +172,23 @@ def test_cg60_no_dwell_cam_auto_offset_and_base_radius_by_closed_forms(nodwell):
         k = int(np.argmax(np.abs(th[m])))
         assert doc["pressure_angle_extreme_deg"][name] == pytest.approx(th[m][k], abs=0.01)
         assert doc["pressure_angle_extreme_phi_deg"][name] == pytest.approx(math.degrees(phi[m][k]), abs=0.05)
+
+
+@pytest.mark.parametrize("which", ["nodwell", "cam60"])
+def test_omegas_arc_stands_inside_the_working_profile(which, request):
+    """ω's arrow on the profile: an arc about O at least 5 mm inside the working profile (measured off the
+    record: the working profile's nearest point to O, R_0 − r = 21 mm drawn for cg60's cam, its 15-mm roller on
+    a 36-mm base circle) — at 0.6 R_0 = 21.6 mm it ran along that profile's line (stop 60); CAM60's (R_0 − r =
+    43 mm) stays at 0.6 R_0 = 33 mm."""
+    from graphplan.drawing.cam import profile_drawing
+    cam, sol, g, doc = request.getfixturevalue(which)
+    rec = profile_drawing(sol, g, "uk")
+    mu = g.mu_l * 1000
+    (work,) = [q for q in rec.items if q.step == "working profile"]
+    nearest = min(abs(complex(*z)) for z in work.points)
+    R0, r = doc["base_radius_m"] * 1000 / mu, doc["roller_radius_m"] * 1000 / mu
+    assert nearest == pytest.approx(R0 - r, abs=0.05)
+    arcs = [q for q in rec.items if q.step == "ω" and q.kind == "arc"]
+    assert len(arcs) == 1
+    assert nearest - arcs[0].radius >= 5.0 - 1e-9
+    assert arcs[0].radius == pytest.approx(min(0.6 * R0, R0 - r - 5.0))

@@ -909,9 +909,9 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
     # R_0 lettered nearer the base circle than ω's arc (_omega: 0.6 R_0, its letter inside it): at
     # 0.55 R_0 the two letters stood at one radius side by side and read «ω R₀» (review 52)
     labels.append(LabelRequest(0.82 * r0 * along, "R_0", toward=-along * 1j, size=TEXT))
-    toward, room = _omega_sector(feet, rays, angles[k] + 2 * gaps[k] / 3, min(gaps[k], 1.2), side,
-                                 OMEGA_AT * r0, cam.rocking)
-    _omega(rec, r0, cam.sense, toward, room, labels)
+    rr = omega_radius(r0, cam.roller / mu)
+    toward, room = _omega_sector(feet, rays, angles[k] + 2 * gaps[k] / 3, min(gaps[k], 1.2), side, rr, cam.rocking)
+    _omega(rec, rr, cam.sense, toward, room, labels)
     labels.append(LabelRequest(0j, "O", toward=-along, size=TEXT, breaks=True))   # by its dot, among the rays
     tips = np.asarray(rays if not cam.rocking else feet)
     reach = float(np.mean(np.abs(tips)))       # the numbers' circle: one label where two rays meet
@@ -998,7 +998,16 @@ def eroded(P: np.ndarray, r: float, offset: np.ndarray) -> np.ndarray:
     return xy[:, 0] + 1j * xy[:, 1]
 
 
-OMEGA_AT = 0.6       # of R_0: the radius of ω's arc
+OMEGA_AT = 0.6       # of R_0: the radius of ω's arc …
+OMEGA_CLEAR = 5.0    # mm: … at most the working profile's least radius, R_0 − r, less this (its arrow and letter inside the cam)
+
+
+def omega_radius(r0: float, roller: float) -> float:
+    """The radius (drawn mm) of ω's arc on the profile: OMEGA_AT of R_0, inside the cam's body — no nearer
+    the working profile than OMEGA_CLEAR (its points lie at least R_0 − r from O, the near dwell's arc
+    there; stop 60: cg60's cam, R_0 = 36 mm and a 15-mm roller, drew ω's arc at 21.6 mm along its
+    21-mm working profile, the arrow read as part of the profile's line)."""
+    return max(min(OMEGA_AT * r0, r0 - roller - OMEGA_CLEAR), 0.3 * r0)
 
 
 def _omega_sector(feet, rays, at: float, room: float, side: float, rr: float, rocking: bool) -> tuple[complex, float]:
@@ -1023,10 +1032,9 @@ def _omega_sector(feet, rays, at: float, room: float, side: float, rr: float, ro
     return cmath.exp(1j * (ang[j] + gaps[j] / 2)), min(float(gaps[j]), 1.2)
 
 
-def _omega(rec: Record, r0: float, sense: int, toward: complex, room: float, labels: list[LabelRequest]) -> None:
-    """ω's arrow: an arc about O inside the base circle, in the sector free of rays (``room`` rad wide
-    about ``toward``), its head in the cam's sense."""
-    rr = OMEGA_AT * r0
+def _omega(rec: Record, rr: float, sense: int, toward: complex, room: float, labels: list[LabelRequest]) -> None:
+    """ω's arrow: an arc of radius ``rr`` about O inside the cam (``omega_radius``), in the sector free of
+    rays (``room`` rad wide about ``toward``), its head in the cam's sense."""
     mid = math.degrees(cmath.phase(toward))
     half = min(25.0, math.degrees(room) / 4)
     a0, a1 = mid - half, mid + half
