@@ -8898,3 +8898,32 @@ delta = 0.05
 efficiency = 0.85
 synchronous_rpm = 1000
 '''
+
+
+
+CG60_CAM_NO_DWELL = '''
+# cg60's (stop 60): a textbook disc cam with no far dwell — a translating roller follower, the cam
+# counter-clockwise, the offset "auto", a cycloidal rise of 150° straight into a parabolic return of 120°
+# (a soft shock at the top), a near dwell of 90°; stroke 40 mm, roller 15 mm, [ϑ] 30°/35°, 10 divisions.
+title = "Кулачковий механізм без дальнього вистою (cg60)"
+title_en = "Cam with no far dwell (cg60)"
+designation = "ТММ.КМ.60.200"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-60"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.040
+offset = "auto"
+roller_radius = 0.015
+phases_deg = { rise = 150, dwell_far = 0, return = 120, dwell_near = 90 }
+laws = { rise = "cycloidal", return = "parabolic" }
+pressure_angle_deg = { rise = 30, return = 35 }
+rpm = 120
+direction = "ccw"
+divisions = 10
+'''

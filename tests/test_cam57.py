@@ -165,9 +165,10 @@ def _page_of(doc, lang: str, profile_foot: float):
 @pytest.mark.parametrize("lang", ["uk", "en"])
 def test_the_given_data_kept_by_both_tables_at_smaller_letters(small, lang):
     """c_cam's uk page (Table 2 at 3.5 mm, the profile's ink from y = 330.6 mm): at 3.5-mm letters the
-    closest rows that keep Table 2's lowered indices clear (7.5 mm) leave 91 mm for the given data's 96;
-    then both tables at 2.5 mm in rows alike (7 mm), the given data between them and as wide — not the
-    page without it (the en sheet, whose Table 2 was at 2.5 mm already, kept it)."""
+    closest rows that kept Table 2's lowered indices clear (7.5 mm) left 91 mm for the given data's 96 and
+    both tables fell to 2.5 mm in rows alike (7 mm); since stop 60 the header row holds the indices' tails
+    and 7-mm rows are clear: both tables at 3.5 mm in rows alike, the given data between them and as wide —
+    not the page without it (the en sheet, whose Table 2 was at 2.5 mm already, kept it)."""
     from graphplan.drawing.labels import collisions
     from graphplan.drawing.layout import GAP
     from graphplan.sheets.cam import positions_table
@@ -181,7 +182,10 @@ def test_the_given_data_kept_by_both_tables_at_smaller_letters(small, lang):
     assert tb[1] == pytest.approx(66.0, abs=1e-6)                              # its foot where it stood
     assert gb[1] >= tb[3] + GAP - 1e-6 and gb[3] <= 330.6 - GAP + 1e-6          # between the table and the profile
     assert gb[2] - gb[0] == pytest.approx(tb[2] - tb[0], abs=0.5)
-    assert tab_size(names["table"].record) == tab_size(names["given"].record) == 2.5
+    # both tables at one lettering: 3.5 mm since stop 60 — Table 2's header row grows to hold a lowered
+    # index's tail (drawing.tables, clear_header), so its 7-mm rows are clear and leave the given data its
+    # 96 mm at 3.5 mm; before, only 7.5-mm rows were, and both tables fell to 2.5 mm
+    assert tab_size(names["table"].record) == tab_size(names["given"].record) == 3.5
     assert not collisions(names["table"].record) and not collisions(names["given"].record)
     # the rows alike: the two tables' ruled rows the same height (21 rows of Table 2 over 13 of the given data)
     h2 = (tb[3] - tb[1]) / 21

@@ -72,5 +72,7 @@ def test_review_11s_rocking_cam_phase_diagram_and_theta(fmt):
     mu_phase = placed["phase"].scales.get("mu_phase") or placed["diagrams"].scales["mu_phase"]
     assert mu_phase < 0.999 * placed["profile"].scales["mu_l"]
     near = _labels_by_O(placed["phase"])
-    for text in ("0, 17", "8, 9", "R_0"):
+    # |OC₀| lettered «R_0» or, where the R0 taken is over the smallest read, «R_0 = … mm» (stop 60)
+    r0 = next(text for text in near if text == "R_0" or text.startswith("R_0 = "))
+    for text in ("0, 17", "8, 9", r0):
         assert near[text] >= 15.0, (text, near[text])

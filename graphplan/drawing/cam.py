@@ -750,11 +750,12 @@ def _o_min_note(apart: float, lang: str) -> str:
 
 
 def _chosen_R0(sol, g, lang: str) -> str:
-    """The letter of |OC₀| on a translating follower's phase diagram: «R_0 = 39 мм», the radius taken,
-    where it is over the smallest read off the diagram — O is then the centre chosen in the region, not
-    its vertex (review 52: O, 2 mm under the vertex, was read as drawn at the smallest R₀ = 38,2 while the
-    profile took 39 mm); else «R_0»."""
-    if sol.cam.rocking or not math.isfinite(g.R0_drawn) or abs(sol.geometry.R0 - g.R0_drawn) <= 1e-9:
+    """The letter of |OC₀| on the phase diagram: «R_0 = 39 мм», the radius taken, where it is over the
+    smallest read off the diagram — O is then the centre chosen in the region, not its vertex (review 52:
+    O, 2 mm under the vertex, was read as drawn at the smallest R₀ = 38,2 while the profile took 39 mm);
+    a rocking follower's too (stop 60: CAM60's |OC₀| drawn at the 55 mm taken, O_min 1,6 mm from O, was
+    lettered «R_0» alone under the caption «найменший і прийнятий R_0»); else «R_0»."""
+    if not math.isfinite(g.R0_drawn) or abs(sol.geometry.R0 - g.R0_drawn) <= 1e-9:
         return "R_0"
     from graphplan.util.words import num
     return f"R_0 = {num(sol.geometry.R0 * 1000.0, lang, 3)} {'мм' if lang == 'uk' else 'mm'}"
@@ -908,9 +909,9 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
     # R_0 lettered nearer the base circle than ω's arc (_omega: 0.6 R_0, its letter inside it): at
     # 0.55 R_0 the two letters stood at one radius side by side and read «ω R₀» (review 52)
     labels.append(LabelRequest(0.82 * r0 * along, "R_0", toward=-along * 1j, size=TEXT))
-    toward, room = _omega_sector(feet, rays, angles[k] + 2 * gaps[k] / 3, min(gaps[k], 1.2), side,
-                                 OMEGA_AT * r0, cam.rocking)
-    _omega(rec, r0, cam.sense, toward, room, labels)
+    rr = omega_radius(r0, cam.roller / mu)
+    toward, room = _omega_sector(feet, rays, angles[k] + 2 * gaps[k] / 3, min(gaps[k], 1.2), side, rr, cam.rocking)
+    _omega(rec, rr, cam.sense, toward, room, labels)
     labels.append(LabelRequest(0j, "O", toward=-along, size=TEXT, breaks=True))   # by its dot, among the rays
     tips = np.asarray(rays if not cam.rocking else feet)
     reach = float(np.mean(np.abs(tips)))       # the numbers' circle: one label where two rays meet
@@ -997,7 +998,16 @@ def eroded(P: np.ndarray, r: float, offset: np.ndarray) -> np.ndarray:
     return xy[:, 0] + 1j * xy[:, 1]
 
 
-OMEGA_AT = 0.6       # of R_0: the radius of ω's arc
+OMEGA_AT = 0.6       # of R_0: the radius of ω's arc …
+OMEGA_CLEAR = 5.0    # mm: … at most the working profile's least radius, R_0 − r, less this (its arrow and letter inside the cam)
+
+
+def omega_radius(r0: float, roller: float) -> float:
+    """The radius (drawn mm) of ω's arc on the profile: OMEGA_AT of R_0, inside the cam's body — no nearer
+    the working profile than OMEGA_CLEAR (its points lie at least R_0 − r from O, the near dwell's arc
+    there; stop 60: cg60's cam, R_0 = 36 mm and a 15-mm roller, drew ω's arc at 21.6 mm along its
+    21-mm working profile, the arrow read as part of the profile's line)."""
+    return max(min(OMEGA_AT * r0, r0 - roller - OMEGA_CLEAR), 0.3 * r0)
 
 
 def _omega_sector(feet, rays, at: float, room: float, side: float, rr: float, rocking: bool) -> tuple[complex, float]:
@@ -1022,10 +1032,9 @@ def _omega_sector(feet, rays, at: float, room: float, side: float, rr: float, ro
     return cmath.exp(1j * (ang[j] + gaps[j] / 2)), min(float(gaps[j]), 1.2)
 
 
-def _omega(rec: Record, r0: float, sense: int, toward: complex, room: float, labels: list[LabelRequest]) -> None:
-    """ω's arrow: an arc about O inside the base circle, in the sector free of rays (``room`` rad wide
-    about ``toward``), its head in the cam's sense."""
-    rr = OMEGA_AT * r0
+def _omega(rec: Record, rr: float, sense: int, toward: complex, room: float, labels: list[LabelRequest]) -> None:
+    """ω's arrow: an arc of radius ``rr`` about O inside the cam (``omega_radius``), in the sector free of
+    rays (``room`` rad wide about ``toward``), its head in the cam's sense."""
     mid = math.degrees(cmath.phase(toward))
     half = min(25.0, math.degrees(room) / 4)
     a0, a1 = mid - half, mid + half

@@ -179,13 +179,13 @@ def glyph_xs(drawn: str, size: float, x0: float) -> list[float]:
     metrics.json)."""
     advance, box = _advances_em()
     k = em(size)
-    out, x, prev = [], x0, ""
+    out, x, before, prev = [], x0, "", ""
     for c in drawn:
         if prev:
-            x += kern(prev, c, size)
+            x += kern(prev, c, size, before)
         out.append(x)
         x += k * advance.get(c, box)
-        prev = c
+        before, prev = prev, c
     return out
 
 

@@ -43,7 +43,8 @@ def title_lines(title: str, width: float, size: float = 3.5) -> list[str]:
 
 
 def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: float = 2.5,
-          title: str = "", header: int = 1, align: list[str] | None = None, span: float | None = None) -> Record:
+          title: str = "", header: int = 1, align: list[str] | None = None, span: float | None = None,
+          clear_header: bool = False) -> Record:
     """A ruled table; its top-left corner at (0, 0), growing downward (y < 0), its title above it.
     The first ``header`` rows are the header (centred, a thick line under them); in the body numbers
     are right-aligned and text centred, or each column as ``align`` says ("start", "middle",
@@ -52,7 +53,9 @@ def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: 
     that width where they are narrower (a table across the column of the sheet it stands in).
     A cell may hold lines broken as a drafter breaks a long value or header («\\n» between them): its
     row grows by a line pitch for each line past the first, its lines centred in the row one under
-    another; a table of one-line cells is ruled as before."""
+    another; a table of one-line cells is ruled as before. ``clear_header``: a header row of one-line cells
+    whose lettering (capitals to a subscript's tail) cannot keep ``RULE_CLEAR`` from both its rules in
+    ``row_h`` grows to hold it, its ink centred (a table set in rows close for its letters)."""
     rec = Record(title)
     lines_of = lambda cell: cell.split("\n")                      # noqa: E731
     widths = [max(w, max((text_width(q, size) for row in rows if c < len(row) and row[c] for q in lines_of(row[c])),
@@ -70,6 +73,13 @@ def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: 
     n = len(rows)
     pitch = line_pitch(size)
     heights = [row_h + pitch * (max((len(lines_of(c)) for c in row if c), default=1) - 1) for row in rows]
+    # (clear_header) a header row of one-line cells whose lettering, capitals to a subscript's tail, cannot keep
+    # RULE_CLEAR from both its rules in row_h grows to hold it (stop 60: the cam set's 3.5-mm Table 1 in 7-mm rows — the
+    # header's «y_{ds/dφ}, мм» reached 0.49 mm from the thick rule under it, a composition defect)
+    ink = [_row_ink(row, size) if clear_header and h_ == row_h and r < header else None
+           for r, (row, h_) in enumerate(zip(rows, heights))]
+    grown = [b is not None and b[1] - b[0] + 2 * RULE_CLEAR > row_h for b in ink]
+    heights = [b[1] - b[0] + 2 * RULE_CLEAR if g else h_ for b, g, h_ in zip(ink, grown, heights)]
     tops = [top]
     for h_ in heights:
         tops.append(tops[-1] - h_)
@@ -85,6 +95,8 @@ def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: 
         # one baseline a row: the lowest any of its cells needs (a raised prime's cell lowers its row)
         y = min((baseline_in_row(q, size, y_row, tops[r] - (len(lines_of(cell)) - 1) * 0.0, row_h)
                  for cell in row if cell for q in lines_of(cell)[:1]), default=y_row)
+        if grown[r]:                     # the row's ink RULE_CLEAR under its top rule, as far over its bottom one
+            y = tops[r] - RULE_CLEAR - ink[r][1]
         for c, cell in enumerate(row):
             if not cell:
                 continue
@@ -92,7 +104,7 @@ def table(rows: list[list[str]], widths: list[float], row_h: float = 6.0, size: 
             how = "middle" if r < header else (align[c] if align else ("end" if _is_number(parts[-1]) else "middle"))
             x = {"start": x_edges[c] + PAD + 0.3, "middle": (x_edges[c] + x_edges[c + 1]) / 2,
                  "end": x_edges[c + 1] - PAD - 0.3}[how]
-            if len(parts) == 1 and heights[r] == row_h:
+            if len(parts) == 1 and (heights[r] == row_h or grown[r]):
                 rec.label((x, y), cell, size=size, anchor=how, layer="tables")
                 continue
             # lines one pitch apart, the block centred in the row (the one-line cell's place shifted)
@@ -120,6 +132,14 @@ def baseline_in_row(cell: str, size: float, y: float, row_top: float, row_h: flo
     if lowered + lo - (row_top - row_h) >= RULE_CLEAR:
         return lowered
     return row_top - row_h / 2 - (hi + lo) / 2
+
+
+def _row_ink(row: list[str], size: float) -> tuple[float, float] | None:
+    """The lowest and highest ink (mm from the baseline) of a row's cells' lettering (None: no ink)."""
+    boxes = [b for cell in row if cell for b in ink_boxes(cell, size)]
+    if not boxes:
+        return None
+    return min(b[1] for b in boxes), max(b[3] for b in boxes)
 
 
 def _is_number(text: str) -> bool:

@@ -376,16 +376,19 @@ def sign_gap(prev: str, c: str) -> float:
 
 
 @lru_cache(maxsize=65536)
-def kern(prev: str, c: str, size: float) -> float:
+def kern(prev: str, c: str, size: float, before: str = "") -> float:
     """Extra space (mm) before ``c`` after ``prev``: a comma or full stop after a letter with no ink
     near the baseline on its right (°, Г, Т, P, 7 …) stands apart from it, beside its box rather
     than tucked under it — the eye reads "60,2° , 93,2°" as two values, where a comma hidden under
     the degree sign reads as a stray mark. A small letter after Г, Т or T tucks under the bar,
     its ink beginning ``UNDER_BAR`` inside the bar's end (pairs osifont does not kern). Nothing otherwise (the font sets text by its
-    advances). A sign (+ = ± ×) touching a letter stands ``sign_gap`` apart from it."""
+    advances). A sign (+ = ± ×) touching a letter stands ``sign_gap`` apart from it. ``before`` is the
+    character before ``prev`` (a letter after an apostrophe tucked over b, h, k stands clear of it)."""
     # an ASCII ' after a letter is tucked only over b, h, k's open right (the lab's, the crank's): after
     # another letter it may be a prime (z'_2, whose index stands under it as z₂'s, review 48) — set as before
     prime = c == "'" and prev not in OPEN_RIGHT
+    if prev == "'" and c.isalpha() and before and before in OPEN_RIGHT:
+        return _after_tucked_apostrophe(c, size)
     if (prev in APOSTROPHES or c in APOSTROPHES) and prev.isalpha() != c.isalpha() and not prime:
         return _apostrophe_kern(prev, c, size)
     if prev in SIGNS or c in SIGNS:
@@ -425,6 +428,23 @@ OPEN_RIGHT = "bhk"  # ascenders whose ink right of the stem ends at the x-height
 OPEN_TUCK = 0.08    # ems: over such a letter the apostrophe's ink begins this far inside its box's right: b's
 #  bowl curves away from its box's corner under it (tucked only to APOSTROPHE_GAP, «lab's» at 4.7-mm letters
 #  still split at 3 of 9 placings on the 4-px/mm grid; at 0.07 em and more at none, its ink still apart)
+
+
+AFTER_APOSTROPHE = 0.16   # ems: a letter after an English apostrophe tucked over b, h or k's open right
+#  stands this far across from the apostrophe's box. Tucked under it too, as after a prime (pair's) or the
+#  Ukrainian one, the apostrophe — already moved left over k's arm — hung over the letter's shoulder: «crank's»
+#  read «crankś» (stops 59, 60). Only after a tucked apostrophe: stop 59 set every letter after an English
+#  apostrophe apart, and after a prime's full advance (pair's, train's) the s then stood a word of its own
+#  (2 overprinted words on the English type-B gear sheet; reverted)
+
+
+def _after_tucked_apostrophe(c: str, size: float) -> float:
+    """``kern`` of a letter after an apostrophe tucked over b, h, k: the boxes ``AFTER_APOSTROPHE`` apart."""
+    m = _metrics()
+    a, b = m["boxes"].get("'"), m["boxes"].get(c)
+    if a is None or b is None:
+        return 0.0
+    return (AFTER_APOSTROPHE - (m["advance"]["'"] - a[2] + b[0])) * em(size)
 
 
 def _apostrophe_kern(prev: str, c: str, size: float) -> float:
@@ -526,15 +546,15 @@ def ink_boxes(text: str, size: float) -> tuple[tuple[float, float, float, float]
                                                              for r, x0, s, shift in run_offsets(text, size)]
     out = []
     for t, x, s, shift in runs_:
-        prev = ""
+        before, prev = "", ""
         for c in lettering(t):
             e = em(s)
-            x += kern(prev, c, s)
+            x += kern(prev, c, s, before)
             b = boxes.get(c, (0.0, 0.0, missing, 0.72))
             if b is not None:
                 out.append((x + b[0] * e, shift + b[1] * e, x + b[2] * e, shift + b[3] * e))
             x += advance.get(c, missing) * e
-            prev = c
+            before, prev = prev, c
     return tuple(out)
 
 
@@ -582,7 +602,7 @@ def plain_width(text: str, size: float) -> float:
     advance, box = _advances()
     drawn = lettering(text)
     return em(size) * sum(advance.get(c, box) for c in drawn) + sum(
-        kern(a, b, size) for a, b in zip(drawn, drawn[1:]))
+        kern(a, b, size, z) for z, a, b in zip(" " + drawn, drawn, drawn[1:]))
 
 
 def kerned(text: str, size: float) -> list[tuple[str, float]]:
@@ -592,7 +612,7 @@ def kerned(text: str, size: float) -> list[tuple[str, float]]:
     out: list[tuple[str, float]] = []
     start, extra = 0, 0.0
     for i in range(1, len(drawn)):
-        k = kern(drawn[i - 1], drawn[i], size)
+        k = kern(drawn[i - 1], drawn[i], size, drawn[i - 2] if i > 1 else "")
         if k:
             out.append((drawn[start:i], extra))
             start, extra = i, k

@@ -75,7 +75,7 @@ def positions_table(doc: dict, lang: str, row_h: float = 6.0, size: float = 2.5,
     ps = doc["positions"]
     rows = [head] + [[str(ps[j].get("number", j))] + [cols[c][j] for c in keys] for j in table_rows(doc)]
     widths = [7.0, 11.0, 15.0, 11.0, 13.0, 13.0, 21.0, 12.0, 16.0, 13.0, 11.0, 11.0, 14.0, 13.0]
-    return table(rows, widths, row_h=row_h, size=size, title=WORDS[lang]["table"], span=span)
+    return table(rows, widths, row_h=row_h, size=size, title=WORDS[lang]["table"], span=span, clear_header=True)
 
 
 def notes(doc: dict, lang: str, cam: Cam) -> list[str]:
@@ -991,8 +991,15 @@ TABLE_SIZES = ((3.5, 10.0), (3.5, 9.0), (3.5, TABLE_ROW), (2.5, 10.0), (2.5, 9.0
 
 # where rows of TABLE_ROW are too many for the room under the profile (a cam of 10 divisions and no far
 # dwell: 22 rows want 182 mm where it has 160), the lettering still 3.5 mm in closer rows — wider than
-# the 2.5 mm table in 6 mm rows, whose 115 mm beside it and 20 mm over it stood blank (stop 49)
+# the 2.5 mm table in 6 mm rows, whose 115 mm beside it and 20 mm over it stood blank (stop 49); its header
+# row grown to hold a subscript's tail clear of the rule under it (positions_table: clear_header)
 CLOSER_ROWS = ((3.5, 7.0), (3.5, 6.5))
+# a set's Table 1: the 3.5-mm letters in closer rows before the 2.5-mm ones in wider rows, then the table's own
+# size (stop 60: the A2 sets took 2.5-mm letters in 8-mm rows where 3.5 mm in 7-mm rows fitted — the closer
+# rows were left out of the sets while their header's subscript tail touched the rule under it; the header
+# row now grows to hold it, drawing.tables)
+SET_TABLE_SIZES = (tuple(t for t in TABLE_SIZES if t[0] == 3.5) + CLOSER_ROWS
+                   + tuple(t for t in TABLE_SIZES if t[0] != 3.5) + ((2.5, 6.0),))
 STRETCH = 1.5        # a table's columns widened at most this much to span its column
 # last, the table's own size (positions_table: 2.5-mm letters in 6-mm rows) across the profile's column: a
 # profile tall enough to leave no room for closer rows kept it 196 mm wide in a column of 344, a blank of
@@ -1115,7 +1122,7 @@ def pressure_by_table(laid, leaves: list[Leaf], doc: dict, sol, g, cam: Cam, lan
         leaf = pressure_leaf(sol, g, lang, w, _pressure_cap(region) * part, True)
         if leaf is None:
             continue
-        for size, row in TABLE_SIZES + ((2.5, 6.0),):
+        for size, row in SET_TABLE_SIZES:
             tab = Leaf("table", record=positions_table(doc, lang, row, size))
             nts = Leaf("notes", record=note_block(lines, max(TITLE, min(300.0, region[2] - region[0] - tab.w - GAP))))
             for again in (kept_together(leaves + [leaf], tab, lines, nts, region, keep, later),  # under the profile
@@ -1158,7 +1165,7 @@ def _with_table(drawings: list, doc: dict, lang: str, lines: list[str], region, 
     """The set's sheets with ``drawings``, Table 1 at each of its sizes (TABLE_SIZES, the largest
     first) and the notes kept with it — each arrangement taking no more sheets than ``laid`` and
     leaving no sheet to the notes alone, in that order."""
-    for size, row in TABLE_SIZES + ((2.5, 6.0),):
+    for size, row in SET_TABLE_SIZES:
         tab = Leaf("table", record=positions_table(doc, lang, row, size))
         nts = Leaf("notes", record=note_block(lines, max(TITLE, min(300.0, region[2] - region[0] - tab.w - GAP))))
         again = kept_together(drawings, tab, lines, nts, region, keep, later, side)
