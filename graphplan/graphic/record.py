@@ -430,6 +430,12 @@ OPEN_TUCK = 0.08    # ems: over such a letter the apostrophe's ink begins this f
 #  still split at 3 of 9 placings on the 4-px/mm grid; at 0.07 em and more at none, its ink still apart)
 
 
+ROUND_TOP = "acegmnopqs"   # small letters whose ink at the x-height curves away from their box's top right (a
+#  bowl or shoulder): an apostrophe after them tucks OPEN_TUCK further, as over b, h, k. Tucked by the box alone,
+#  «rise's» and «plan's» (4.7-mm letters) left the apostrophe 0.7 mm above and across the curve: overprint.py's
+#  0.8-mm closing took it for a mark of its own inside the word's box (review 60: cam and forces sheets, en)
+
+
 AFTER_APOSTROPHE = 0.16   # ems: a letter after an English apostrophe tucked over b, h or k's open right
 #  stands this far across from the apostrophe's box. Tucked under it too, as after a prime (pair's) or the
 #  Ukrainian one, the apostrophe — already moved left over k's arm — hung over the letter's shoulder: «crank's»
@@ -463,8 +469,8 @@ def _apostrophe_kern(prev: str, c: str, size: float) -> float:
     if top >= mark[1]:
         return 0.0
     gap = m["advance"].get(prev, m["missing"]) - a[2] + b[0]
-    if top < letter[3]:                        # over a bowl's curve: its box's corner is not its ink's
-        gap += OPEN_TUCK
+    if top < letter[3] or (c in APOSTROPHES and prev in ROUND_TOP):   # over a bowl's (shoulder's) curve:
+        gap += OPEN_TUCK                       # its box's corner is not its ink's
     return -max(gap - APOSTROPHE_GAP, 0.0) * em(size)
 
 
