@@ -8927,3 +8927,34 @@ rpm = 120
 direction = "ccw"
 divisions = 10
 '''
+
+
+# cam60b (stop 60): review 60's scene c — a translating roller follower, e = −6 mm, the cam clockwise, R0 given 50 mm
+# below the smallest; Table 1's row 5 has ϑ = 30,8° > [ϑ] = 30° (the «*» legend and the ϑ cells, review 60 #5)
+CAM60B_REVIEW_C = '''
+# review60 (c): a translating ROLLER follower with an explicit NEGATIVE offset (to the side that raises the rise's
+# pressure angle), the cam CLOCKWISE, a parabolic rise of 100°, far dwell 40°, trapezoidal return 110°, near dwell
+# 110°; h = 35 mm, roller 10 mm, [ϑ] 30°/35°; R0 given (50 mm); 10 divisions.
+title = "Кулачковий механізм з поступальним роликовим штовхачем (рецензія 60)"
+title_en = "Disc cam with a translating roller follower (review 60)"
+designation = "ТММ.КП.60.500"
+
+[sheet]
+student = "Рецензент Р. Р."
+teacher = "Викладач В. В."
+group = "МБ-60"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.035
+offset = -0.006
+roller_radius = 0.010
+phases_deg = { rise = 100, dwell_far = 40, return = 110, dwell_near = 110 }
+laws = { rise = "parabolic", return = "trapezoidal" }
+pressure_angle_deg = { rise = 30, return = 35 }
+base_radius = 0.060
+rpm = 150
+direction = "cw"
+divisions = 10
+'''

@@ -290,8 +290,13 @@ def table_columns(doc: dict[str, Any], lang: str) -> dict[str, list[str]]:
                 for g, e, p in zip(out[name + "_gr"], out[name], ps)]
         out["d" + name] = ["—" if v is None else cells([v], lang, 2)[0] + ("*" if abs(round(v, 2)) > LAB_LIMIT else "")
                            for v in errs]
-    out["theta"] = cells([p["exact"]["pressure_angle_deg"] for p in ps], lang, 1)
-    out["theta_gr"] = cells([p["graphical"]["pressure_angle_deg"] for p in ps], lang, 1)
+    # ϑ to 0.1°, «*» where the printed value is past its phase's allowed [ϑ] (as δ's «*» judges the printed δ):
+    # the notes star the phase's largest (angles_over), the rows past [ϑ] were bare (review 60 #5: 30,8° > 30°)
+    allowed = doc["pressure_angle_allowed_deg"]
+    for name, side in (("theta", "exact"), ("theta_gr", "graphical")):
+        vals = [p[side]["pressure_angle_deg"] for p in ps]
+        out[name] = [c + ("*" if abs(round(v, 1)) > allowed[p["phase"]] + 1e-9 else "")
+                     for c, v, p in zip(cells(vals, lang, 1), vals, ps)]
     jumps(out, doc, lang, d, ruler)          # d: the ds/dφ columns' decimals (the loop's last)
     ex = [p["exact"]["radius_m"] * 1000 for p in ps]
     gr = [p["graphical"]["radius_mm"] * doc["scales"]["mu_l_m_mm"] * 1000 for p in ps]

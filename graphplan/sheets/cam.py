@@ -91,15 +91,18 @@ def notes(doc: dict, lang: str, cam: Cam) -> list[str]:
     marked = any(c.endswith("*") for c in cols["ds"] + cols["dv"])
     if short_ordinates(doc):
         lines.append(short_note(doc, lang))
-    # «*» means two things on this sheet: an error past 5 % (Table 2) and a largest pressure angle past
-    # its allowed one (the notes' angles, ϑ(φ)'s peak letter, a given R0 below the smallest): the legend
-    # says each meaning that occurs (review 58 #5: only the 5 % was said, under «32,81°*»)
+    # «*» means two things on this sheet: an error δ past 5 % (Table 1's δ columns) and a pressure angle past
+    # its allowed one (the notes' angles, ϑ(φ)'s peak letter, Table 1's ϑ cells): the legend says each meaning
+    # that occurs (review 58 #5: only the 5 % was said, under «32,81°*»), pointing at Table 1 — the sheet's only
+    # table (review 60 #5: «(табл. 2)» pointed at a table no cam sheet has)
     said = []
     if marked:
-        said.append("похибка понад 5 % (табл. 2): коротка ордината (кілька мм) або мало поділок"
-                    if lang == "uk" else "an error past 5 % (Table 2): a short ordinate (a few mm) or few divisions")
+        said.append("похибка δ понад 5 % (табл. 1): коротка ордината (кілька мм) або мало поділок"
+                    if lang == "uk" else "an error δ past 5 % (Table 1): a short ordinate (a few mm) or few divisions")
     if angles_over(doc):
-        said.append("кут тиску понад допустимий [ϑ]" if lang == "uk" else "a pressure angle past the allowed [ϑ]")
+        rows = any(c.endswith("*") for c in cols["theta"] + cols["theta_gr"])      # Table 1 named where it stars one
+        said.append(("кут тиску понад допустимий [ϑ]" if lang == "uk" else "a pressure angle past the allowed [ϑ]")
+                    + ((" (табл. 1)" if lang == "uk" else " (Table 1)") if rows else ""))
     if said:
         lines.append("* — " + "; ".join(said))
     return lines
