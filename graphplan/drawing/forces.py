@@ -1625,8 +1625,10 @@ def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str
     half = max(rb[2] - rb[0], _caption_across(gp_label)) / 2
     mid = (rb[0] + rb[2]) / 2
     tries = [(mu, False) for mu in d.choices] + ([(d.choices[0], True)] if beside else [])
-    for mu, out in tries:
-        det = _detail_drawing(d, mu, sides, same, mu_F, lang, step)
+    # every side named where the detail so lettered has room, else (FRC56_PUSHER's knots) its sides
+    # the plan's lettering bound names, as before: a detail is not given up for its short names
+    for mu, out, every in [(mu, out, every) for every in (True, False) for mu, out in tries]:
+        det = _detail_drawing(d, mu, sides, same, mu_F, lang, step, every)
         if out:                 # under the plan, at its middle
             e0, _, e2, e3 = det.bounds()
             moved = det.moved((rb[0] + rb[2]) / 2 - (e0 + e2) / 2, rb[1] - DETAIL_GAP - e3)
@@ -1654,7 +1656,7 @@ DETAIL_MID_MM = 8.0     # a detail's side shorter than this is named at its midd
 
 
 def _detail_drawing(d: PlanDetail, mu: float, sides: list, same: dict[str, str], mu_F: float, lang: str,
-                    step: str) -> Record:
+                    step: str, every: bool = True) -> Record:
     """The detail at μF_I = ``mu``: every side through the window, enlarged μF/μF_I times about its
     middle (a side's head out of the window drawn as its line), named; its name over it."""
     from graphplan.drawing.charts import DETAIL_NAME
@@ -1694,7 +1696,7 @@ def _detail_drawing(d: PlanDetail, mu: float, sides: list, same: dict[str, str],
     # every side the detail draws is named there, however short: naming the plan's short sides is
     # what the detail is for (the crank's Φ1, 1 mm on the plan and 2.5 mm here, went unnamed, its
     # head lost on G1's line, and the polygon read R01, G1, R21 only: review 60 #2)
-    lettered = [s for s in drawn if s.name not in same]
+    lettered = [s for s in drawn if (every or s.mm >= TINY_MM or s.name == d.read) and s.name not in same]
     # each name nearer its own side than any other (labels.place_owned_line), tried along the side
     # on either hand: LINK50's detail of the stone's corner had "R54" by R05's line and Φ4's
     # leader across G5
