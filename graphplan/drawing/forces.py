@@ -1696,7 +1696,8 @@ def _detail_drawing(d: PlanDetail, mu: float, sides: list, same: dict[str, str],
     # every side the detail draws is named there, however short: naming the plan's short sides is
     # what the detail is for (the crank's Φ1, 1 mm on the plan and 2.5 mm here, went unnamed, its
     # head lost on G1's line, and the polygon read R01, G1, R21 only: review 60 #2)
-    lettered = [s for s in drawn if (every or s.mm >= TINY_MM or s.name == d.read) and s.name not in same]
+    # (every=True naming all sides, review 60 #2, lost FRC56_PUSHER's and LINK59's details: off until found why)
+    lettered = [s for s in drawn if (s.mm >= TINY_MM or s.name == d.read) and s.name not in same]
     # each name nearer its own side than any other (labels.place_owned_line), tried along the side
     # on either hand: LINK50's detail of the stone's corner had "R54" by R05's line and Φ4's
     # leader across G5
