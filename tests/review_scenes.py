@@ -8958,3 +8958,94 @@ rpm = 150
 direction = "cw"
 divisions = 10
 '''
+
+
+# frc60b: review 60's scene (a) — a crank-rocker whose rocker drives a slider on a 30° inclined guide (its crank
+# plan's Φ1 1 mm at 5 N/mm, lost in the detail and captioned "< 1 мм": review 60 #2)
+FRC60B_INCLINE = '''
+# review60 (a): a Stephenson-free six-bar of a feeder: the crank-rocker O1A-AB-O2B whose rocker O2B carries (beyond B,
+# on the bar's line) the pin C of a rod CD to a slider D on a guide INCLINED at 30°: I(0-1) -> II(2-3) ВВВ -> II(4-5) ВВП;
+# the crank CLOCKWISE at 90 rpm; 800 N against the slider on its working stroke; masses by length, the slider 10 kg;
+# [dynamics] to a 1000-rpm motor, δ = 0.05.
+title = "Шестиланковий механізм подавача з повзуном на похилій напрямній"
+title_en = "Six-bar feeder drive with a slider on an inclined guide"
+designation = "ТММ.КП.60.700"
+
+[sheet]
+student = "Рецензент Р. Р."
+teacher = "Викладач В. В."
+group = "МБ-60"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.28, 0.10]
+
+[frame.guides]
+d = { through = [0.30, 0.40], angle_deg = 30, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.07
+rpm = 90
+direction = "cw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.25
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2C"
+number = 3
+joints = ["O2", "B"]
+length = 0.16
+shape = { C = [0.24, 0.0] }
+points = { S3 = 0.5 }
+
+[[link]]
+name = "CD"
+number = 4
+joints = ["C", "D"]
+length = 0.28
+points = { S4 = 0.5 }
+
+[[link]]
+name = "D"
+number = 5
+joints = ["D"]
+slides_on = "d"
+mass = 10
+
+[branch]
+B = 1
+D = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [2, 8]
+force_phi_deg = 120
+output = "D"
+
+[loads]
+g = 9.81
+mass_per_length = 25
+inertia_factor = 0.1
+
+[[force]]
+point = "D"
+magnitude = 800
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 1000
+'''

@@ -1483,7 +1483,9 @@ def _polygon(fp: ForcePlans, gp: GroupPlan, lang: str, detail: bool, beside: boo
     if tiny or unseen:     # vectors too short to carry a label: named under the plan with their bound
         names = ", ".join(dict.fromkeys([force_symbol(s.name, lang) for s in tiny]
                                         + [force_symbol(n, lang) for n in unseen]))
-        bound = math.floor(max(s.mm for s in tiny)) + 1 if tiny else 1
+        # (a side laid off 1 mm long measures 0.9999… mm along its exact direction: its bound is 2 mm,
+        # not "< 1 мм" beside the notes' «Φ1 1 мм», review 60 #2)
+        bound = math.floor(round(max(s.mm for s in tiny), 6)) + 1 if tiny else 1
         caption += f"; {names} < {num(bound, lang)} {unit('mm', lang)}"
     # a tangential component the ruler reads as 0 mm (R^τ24 = −1.99 N at 25 N/mm: 0.08 mm) is no
     # side at all: named with its bound, the ruler's division, so that none goes unaccounted for
@@ -1750,7 +1752,8 @@ def _detail_drawing(d: PlanDetail, mu: float, sides: list, same: dict[str, str],
         drawn.append(Side(s.name, A, B, s.role))
     if x0 <= 0.0 <= x1 and y0 <= 0.0 <= y1:
         det.point(_pt(-c * k), layer="vectors", step=dstep)
-    # (the reaction read here named however short: its reading is what the detail is for)
+    # (the reaction read here named however short: its reading is what the detail is for; naming every
+    # short side, review 60 #2's Φ1 at 2.5 mm, lost FRC56_PUSHER's and LINK59's details: not yet)
     lettered = [s for s in drawn if (s.mm >= TINY_MM or s.name == d.read) and s.name not in same]
     # each name nearer its own side than any other (labels.place_owned_line), tried along the side
     # on either hand: LINK50's detail of the stone's corner had "R54" by R05's line and Φ4's
