@@ -104,7 +104,7 @@ def test_the_largest_pressure_angle_is_said_with_where_it_falls(cam56):
     assert "підйом −27,04° при φ = 0° (на початку фази)" in uk
     assert "опускання −44,75° при φ = 221,5° (допустимо" in uk
     en = next(x for x in cam_lines(doc, "en") if x.startswith("Largest pressure angle"))
-    assert "rise −27.04° at φ = 0° (the phase's start)" in en
+    assert "rise −27.04° at φ = 0° (the start of the phase)" in en
     # the first row of Table 1 (φ = 0) carries the same angle
     assert doc["positions"][0]["exact"]["pressure_angle_deg"] == pytest.approx(doc["pressure_angle_extreme_deg"]["rise"], abs=1e-6)
 

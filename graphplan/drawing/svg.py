@@ -180,9 +180,9 @@ def glyph_xs(drawn: str, size: float, x0: float) -> list[float]:
     advance, box = _advances_em()
     k = em(size)
     out, x, before, prev = [], x0, "", ""
-    for i, c in enumerate(drawn):
+    for c in drawn:
         if prev:
-            x += kern(prev, c, size, before, drawn[i + 1:i + 2])
+            x += kern(prev, c, size, before)
         out.append(x)
         x += k * advance.get(c, box)
         before, prev = prev, c

@@ -376,21 +376,17 @@ def sign_gap(prev: str, c: str) -> float:
 
 
 @lru_cache(maxsize=65536)
-def kern(prev: str, c: str, size: float, before: str = "", after: str = "") -> float:
+def kern(prev: str, c: str, size: float, before: str = "") -> float:
     """Extra space (mm) before ``c`` after ``prev``: a comma or full stop after a letter with no ink
     near the baseline on its right (°, Г, Т, P, 7 …) stands apart from it, beside its box rather
     than tucked under it — the eye reads "60,2° , 93,2°" as two values, where a comma hidden under
     the degree sign reads as a stray mark. A small letter after Г, Т or T tucks under the bar,
     its ink beginning ``UNDER_BAR`` inside the bar's end (pairs osifont does not kern). Nothing otherwise (the font sets text by its
     advances). A sign (+ = ± ×) touching a letter stands ``sign_gap`` apart from it. ``before`` is the
-    character before ``prev`` (a letter after an apostrophe tucked over b, h, k stands clear of it), ``after``
-    the character after ``c`` (an ASCII ' between two letters is an apostrophe, not a prime)."""
+    character before ``prev`` (a letter after an apostrophe tucked over b, h, k stands clear of it)."""
     # an ASCII ' after a letter is tucked only over b, h, k's open right (the lab's, the crank's): after
     # another letter it may be a prime (z'_2, whose index stands under it as z₂'s, review 48) — set as before
-    # Between two letters it is an apostrophe (rise's, plan's, pair's): set as a prime, at its full advance
-    # 0.10–0.11 em across and 0.15 em above the letter before it, it read as a mark of its own inside the word's
-    # box (review 60: «rise's» on the cam sheet, «plan's» on the forces sheets, overprint.py's 0.8-mm closing)
-    prime = c == "'" and prev not in OPEN_RIGHT and not (prev.isalpha() and after.isalpha())
+    prime = c == "'" and prev not in OPEN_RIGHT
     if prev == "'" and c.isalpha() and before and before in OPEN_RIGHT:
         return _after_tucked_apostrophe(c, size)
     if (prev in APOSTROPHES or c in APOSTROPHES) and prev.isalpha() != c.isalpha() and not prime:
@@ -435,9 +431,9 @@ OPEN_TUCK = 0.08    # ems: over such a letter the apostrophe's ink begins this f
 
 
 ROUND_TOP = "acegmnopqs"   # small letters whose ink at the x-height curves away from their box's top right (a
-#  bowl, a shoulder): an apostrophe after them tucks OPEN_TUCK further, as over b, h, k's. By the box alone, at the
-#  A1 notes' 4.7-mm letters (em 6.4 mm) it stood 0.95 mm above the x-height and across the curve: overprint.py's
-#  0.8-mm closing took it for a mark of its own inside «rise's», «plan's», «cam's», «one's» (review 60)
+#  bowl or shoulder): an apostrophe after them tucks OPEN_TUCK further, as over b, h, k. Tucked by the box alone,
+#  «rise's» and «plan's» (4.7-mm letters) left the apostrophe 0.7 mm above and across the curve: overprint.py's
+#  0.8-mm closing took it for a mark of its own inside the word's box (review 60: cam and forces sheets, en)
 
 
 AFTER_APOSTROPHE = 0.16   # ems: a letter after an English apostrophe tucked over b, h or k's open right
@@ -473,7 +469,7 @@ def _apostrophe_kern(prev: str, c: str, size: float) -> float:
     if top >= mark[1]:
         return 0.0
     gap = m["advance"].get(prev, m["missing"]) - a[2] + b[0]
-    if top < letter[3] or (c in APOSTROPHES and prev in ROUND_TOP):   # over a bowl's (a shoulder's) curve:
+    if top < letter[3] or (c in APOSTROPHES and prev in ROUND_TOP):   # over a bowl's (shoulder's) curve:
         gap += OPEN_TUCK                       # its box's corner is not its ink's
     return -max(gap - APOSTROPHE_GAP, 0.0) * em(size)
 
@@ -557,10 +553,9 @@ def ink_boxes(text: str, size: float) -> tuple[tuple[float, float, float, float]
     out = []
     for t, x, s, shift in runs_:
         before, prev = "", ""
-        drawn = lettering(t)
-        for i, c in enumerate(drawn):
+        for c in lettering(t):
             e = em(s)
-            x += kern(prev, c, s, before, drawn[i + 1:i + 2])
+            x += kern(prev, c, s, before)
             b = boxes.get(c, (0.0, 0.0, missing, 0.72))
             if b is not None:
                 out.append((x + b[0] * e, shift + b[1] * e, x + b[2] * e, shift + b[3] * e))
@@ -613,7 +608,7 @@ def plain_width(text: str, size: float) -> float:
     advance, box = _advances()
     drawn = lettering(text)
     return em(size) * sum(advance.get(c, box) for c in drawn) + sum(
-        kern(a, b, size, z, y) for z, a, b, y in zip(" " + drawn, drawn, drawn[1:], drawn[2:] + " "))
+        kern(a, b, size, z) for z, a, b in zip(" " + drawn, drawn, drawn[1:]))
 
 
 def kerned(text: str, size: float) -> list[tuple[str, float]]:
@@ -623,7 +618,7 @@ def kerned(text: str, size: float) -> list[tuple[str, float]]:
     out: list[tuple[str, float]] = []
     start, extra = 0, 0.0
     for i in range(1, len(drawn)):
-        k = kern(drawn[i - 1], drawn[i], size, drawn[i - 2] if i > 1 else "", drawn[i + 1:i + 2])
+        k = kern(drawn[i - 1], drawn[i], size, drawn[i - 2] if i > 1 else "")
         if k:
             out.append((drawn[start:i], extra))
             start, extra = i, k

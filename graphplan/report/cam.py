@@ -169,13 +169,13 @@ WORDS = {
            "dwells": "on the dwells ϑ ≠ 0 (near {t}°, far {u}°): the profile there arcs about O, their normal the "
                      "line CO, and {c} moves square to the arm O_{{1}}C, so ϑ = {f} from the "
                      "triangle OO_{{1}}C (a, l and R_0 = {r} mm on the near dwell, R_{{max}} = {m} mm on the far one)",
-           "offset_side": " (the follower's axis {d} mm {side} of O, {effect} the rise's pressure angle and "
-                          "{other} the return's{why})",
+           "offset_side": " (the axis of the follower {d} mm {side} of O, {effect} the pressure angle of the rise "
+                          "and {other} that of the return{why})",
            "offset_auto": "; e chosen for the smallest R_0",
            "central": " (a central follower: its axis passes through O)",
            "side": ("right", "left"), "effect": ("lowering", "raising"), "other": ("raising", "lowering"), "arm": "arm l = {l} mm, a = {a} mm, ψ_0 = {p}°",
            "angles": "largest pressure angle over the phase: rise {r}, return {t} (allowed [ϑ] = {ar}°, {at}°)",
-           "angle_at": "{a}° at φ = {p}°", "angle_end": ("the phase's start", "the phase's end"),
+           "angle_at": "{a}° at φ = {p}°", "angle_end": ("the start of the phase", "the end of the phase"),
            "curv": "smallest radius of curvature of the centre profile ρ_{{min}} = {c} mm, roller r = {r} mm",
            "knife": "smallest radius of curvature of the profile ρ_{{min}} = {c} mm (a knife-edge follower, no roller)",
            "smooth": "over the smooth parts",
@@ -190,7 +190,7 @@ WORDS = {
            "scales": "scales: {p}, {a}, {v}, {s}, {l}; H_1\u00a0=\u00a0{h1}\u00a0mm, H_2\u00a0=\u00a0{h2}\u00a0mm",
            "closing": "the graphical {q} closed: {which} laid back over the divisions in proportion to the "
                       "turn (the ordinate y_k lowered by Δ·k/n){tail}",
-           "closing_one": ("the rise's closing error Δ = {d} mm", "the return's closing error Δ = {d} mm"),
+           "closing_one": ("the closing error of the rise Δ = {d} mm", "the closing error of the return Δ = {d} mm"),
            "closing_tail": ("; the rise closed as drawn (Δ = 0)", "; the return closed as drawn (Δ = 0)"),
            "closing_two": "the closing errors Δ = {r} mm (rise) and Δ = {t} mm (return)",
            "closed": "the graphical {q} closed as drawn: the closing error of the rise and of the return "
