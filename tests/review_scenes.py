@@ -8671,92 +8671,14 @@ rpm = 1450
 
 # frc60: LINK60 with the plunger B listed before the rod AB — the pin B is the plunger's, so group II(4-5) is
 # attached to the slider (R34 on the rod BC, R43 on the plunger in group II(2-3), R23 the rod AB's on the pin)
-FRC60_PLUNGER = '''# Stop 60 (frc60's check of the slider-attached group: LINK60 with the plunger listed first, so that the pin B
-# is the plunger's and the rods AB, BC each bear on it — R43/R34 at B, the textbook's crosshead): an offset crank-slider on a VERTICAL guide (a plunger B) whose slider drives a
-# rocker O2C through the rod BC: I(0-1) -> II(2-3) RRP -> II(4-5) RRR attached to the slider; the crank
-# counter-clockwise at 150 rpm; a 60 N·m resistance moment on the rocker over its working swing; masses by
-# length; dynamics to a 1500-rpm motor, δ = 1/25.
-title = "Механізм плунжера з коромислом"
-title_en = "Plunger mechanism driving a rocker"
-designation = "ТММ.КП.60.000"
-
-[sheet]
-student = "Перевірка Н. Н."
-teacher = "Викладач В. В."
-group = "МБ-60"
-organisation = "НУБіП України"
-
-[frame.points]
-O = [0, 0]
-O2 = [0.22, 0.30]
-
-[frame.guides]
-y = { through = [0.03, 0], angle_deg = 90, title_uk = "плунжера", title_en = "of the plunger" }
-
-[crank]
-name = "OA"
-pivot = "O"
-pin = "A"
-length = 0.065
-rpm = 150
-direction = "ccw"
-points = { S1 = 0.0 }
-
-[[link]]
+FRC60_PLUNGER = LINK60.replace(_PLUNGER_BLOCK := '''[[link]]
 name = "B"
 number = 3
 joints = ["B"]
 slides_on = "y"
 mass = 8
 
-[[link]]
-name = "AB"
-number = 2
-joints = ["A", "B"]
-length = 0.24
-points = { S2 = 0.35 }
-
-[[link]]
-name = "BC"
-number = 4
-joints = ["B", "C"]
-length = 0.20
-points = { S4 = 0.5 }
-
-[[link]]
-name = "O2C"
-number = 5
-joints = ["O2", "C"]
-length = 0.13
-points = { S5 = 0.5 }
-
-[branch]
-B = 1
-C = 1
-
-[positions]
-count = 12
-start = "working"
-accel = [3]
-force_phi_deg = 60
-output = "O2C"
-
-[loads]
-g = 9.81
-mass_per_length = 22
-inertia_factor = 0.1
-
-[[moment]]
-link = "O2C"
-magnitude = 60
-stroke = "working"
-direction = "oppose"
-
-[dynamics]
-delta = 0.04
-efficiency = 0.85
-synchronous_rpm = 1500
-'''
+''', "").replace('[[link]]\nname = "AB"', _PLUNGER_BLOCK + '[[link]]\nname = "AB"')
 
 
 # kin60b (stop 60): review 60's scene b — a single-toggle jaw crusher as a crank-rocker, in English; its A1 drew

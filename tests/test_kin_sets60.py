@@ -18,6 +18,7 @@ from graphplan.drawing.layout import GAP, Grid, Leaf, cells, extent, flow
 from graphplan.sheets.compose import field_of, keep_out, later_keep
 from graphplan.sheets.form import form
 from graphplan.sheets.kinlayout import _beside, set_rows
+from test_kin_tail59 import _check    # every drawing once, in order, in the field, clear of the title block, no overlap
 
 F = form("A3")
 REGION, KEEP, LATER = field_of(F), keep_out(F), later_keep(F)
@@ -32,23 +33,6 @@ def _pages(V, P=None):
 
 def _placed(pages):
     return [(k, leaf.name, b) for k, page in enumerate(pages) for leaf, b in page if leaf.name]
-
-
-def _check(pages, names):
-    """Every drawing once, in order over the sheets; inside the field, clear of the title block, no two
-    boxes meeting; on each sheet the next right of the last one's left edge or under it."""
-    placed = _placed(pages)
-    assert [n for _, n, _ in placed] == names
-    x0, y0, x1, y1 = REGION
-    for k, page in enumerate(pages):
-        keep = KEEP if k == 0 else LATER
-        bs = [b for leaf, b in page if leaf.name]
-        for b in bs:
-            assert x0 - 1e-6 <= b[0] and b[2] <= x1 + 1e-6 and y0 - 1e-6 <= b[1] and b[3] <= y1 + 1e-6
-            assert b[1] >= keep[3] - 1e-6 or b[2] <= keep[0] + 1e-6
-        for i, a in enumerate(bs):
-            for b in bs[i + 1:]:
-                assert not (a[0] < b[2] - 1e-6 and b[0] < a[2] - 1e-6 and a[1] < b[3] - 1e-6 and b[1] < a[3] - 1e-6)
 
 
 # the four-bar's (examples/four_bar.toml) velocity plans at μv 0.01 (m/s)/mm on its A3 set, mm: the cell
