@@ -131,7 +131,8 @@ def test_the_printed_offset_side_and_pressure_angles_are_the_clockwise_cams(cam4
 def test_the_own_rocking_cams_printed_angles_and_curvature_by_brute_force(own49):
     """CAM_OWN49 (rocking roller follower, cw, cycloidal rise 90° into a trapezoidal return 120°, the
     trapezoid's ramps an eighth of the phase each) turned clockwise by brute force: the pivot O₁ at
-    (a, 0), the arm at ψ0 + ψ from O₁O (ψ0 from the triangle OO₁C: a, l, R0 — the cosine rule), the
+    (a, 0), the arm at ψ0 + ψ from O₁O under the line O–O1 (a clockwise cam's layout: the counter-clockwise
+    one mirrored, stop 60) (ψ0 from the triangle OO₁C: a, l, R0 — the cosine rule), the
     roller's centre's locus in the cam's frame; ϑ between its normal and C's velocity (square to
     the arm); ρ its radius of curvature where convex. The printed ψ0, largest angles and ρ_min."""
     sol, _ = own49
@@ -148,10 +149,10 @@ def test_the_own_rocking_cams_printed_angles_and_curvature_by_brute_force(own49)
     psi0 = math.acos((a * a + l * l - R0 * R0) / (2 * a * l))
     ang = math.pi - (psi0 + psi)
     c, sn = np.cos(phi), np.sin(phi)
-    C = np.stack([a + l * np.cos(ang), l * np.sin(ang)])
+    C = np.stack([a + l * np.cos(ang), -l * np.sin(ang)])
     P = np.stack([c * C[0] - sn * C[1], sn * C[0] + c * C[1]])
     t = np.gradient(P, phi, axis=1)
-    vel = np.stack([-np.sin(ang), np.cos(ang)])
+    vel = np.stack([-np.sin(ang), -np.cos(ang)])
     velc = np.stack([c * vel[0] - sn * vel[1], sn * vel[0] + c * vel[1]])
     theta = np.degrees(np.arcsin(np.clip(np.abs((t / np.linalg.norm(t, axis=0) * velc).sum(axis=0)), 0, 1)))
     dd = np.gradient(t, phi, axis=1)

@@ -153,7 +153,9 @@ A2_, L2, PSI2 = 0.140, 0.110, math.radians(20.0)
 
 def _theta_own(R0: float, phi_deg: float, side: float) -> float:
     """The own scene's ϑ by inversion at ``phi_deg`` approached from ``side`` (±1), the cam clockwise:
-    the profile C·e^{+iφ}, its tangent in the fixed frame t = C′ + iC; the linear rise ψ = Ψφ/Φ."""
+    the profile C·e^{+iφ}, its tangent in the fixed frame t = C′ + iC; the linear rise ψ = Ψφ/Φ; the arm under
+    the line O–O1, C = A + l·e^{−i(π − ψ0 − ψ)} (a clockwise cam's layout: the counter-clockwise one mirrored,
+    stop 60)."""
     rise, far = 100.0, 40.0
     phi = phi_deg + side * 1e-7
     if 0 < phi < rise:
@@ -165,10 +167,10 @@ def _theta_own(R0: float, phi_deg: float, side: float) -> float:
     else:
         raise ValueError(phi)
     psi0 = math.acos((A2_ * A2_ + L2 * L2 - R0 * R0) / (2 * A2_ * L2))
-    e = np.exp(1j * (math.pi - psi0 - p))
+    e = np.exp(-1j * (math.pi - psi0 - p))
     C = A2_ + L2 * e
-    t = -1j * L2 * e * d + 1j * C
-    return math.degrees(math.asin(float(np.real(np.conj(t) * (-1j * e))) / abs(t)))
+    t = 1j * L2 * e * d + 1j * C
+    return math.degrees(math.asin(float(np.real(np.conj(t) * (1j * e))) / abs(t)))
 
 
 @pytest.fixture(scope="module")

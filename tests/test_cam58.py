@@ -282,8 +282,9 @@ def test_stop_57s_a1_sheets_lose_their_top_left_strip(name):
 def test_own58_clockwise_rocking_cam_by_brute_force(own58):
     """OWN_CAM58 (ψ_max = 20°, l = 100 mm, a = 120 mm; a parabolic rise of 120°, a far dwell of 40°, a linear
     return of 100°; [ϑ] 40°/45°; the cam clockwise, σ = −1) by the brute force above with the clockwise
-    relative velocity C′ + iC: R0 min to 0.01 mm (the counter-clockwise sense would give another, 37.86 mm:
-    the sense enters), each phase's largest ϑ at R0 = 37 mm and its turn (the return's at its start, one-sided
+    relative velocity C′ + iC and the arm on the side of O–O1 a clockwise cam lays it (stop 60: the
+    counter-clockwise layout mirrored about O–O1): R0 min to 0.01 mm, 37.86 mm as the counter-clockwise cam's
+    with its own arm (the mirror), and not the 36.15 mm of the arm on the other side, each phase's largest ϑ at the R0 taken and its turn (the return's at its start, one-sided
     after the jump of dψ/dφ), the two corners at the return's ends (convex at 160°, concave at 260°) and the
     shocks: rigid there, soft at the parabolic rise's start, middle and end."""
     cam, sol, g, doc = own58
@@ -304,30 +305,36 @@ def test_own58_clockwise_rocking_cam_by_brute_force(own58):
     dpsi = (psi_of(phi + 1e-4) - psi_of(phi - 1e-4)) / math.radians(2e-4)
     rise, ret = phi <= 120.0, (phi > 160.0 + 1e-3) & (phi < 260.0 - 1e-3)
 
-    def theta(R0, sigma):
+    def theta(R0, sigma, side=None):
+        # side: +1 the arm over O–O1 (the counter-clockwise layout), −1 under it (the clockwise one's mirror)
         psi0 = math.acos((a * a + l * l - R0 * R0) / (2 * a * l))
         turn = np.exp(1j * (math.pi - psi0 - psi))
         C, dC = a + l * turn, -1j * l * turn
+        if (sigma if side is None else side) < 0:
+            C, dC = C.conjugate(), dC.conjugate()
         t = dC * dpsi - 1j * sigma * C
         return np.degrees(np.arcsin((np.conj(t) * dC / l).real / np.abs(t)))
 
-    def r0_min(sigma):
+    def r0_min(sigma, side=None):
         def worst(R):
-            th = theta(R, sigma)
+            th = theta(R, sigma, side)
             return max(np.max(np.abs(th[rise])) / 40.0, np.max(np.abs(th[ret])) / 45.0)
         return _least(worst, 0.09)
     assert doc["sense"] == "cw"
     assert doc["base_radius_min_m"] == pytest.approx(r0_min(-1), abs=1e-5)
-    assert abs(doc["base_radius_min_m"] - r0_min(+1)) > 1e-3
-    th = theta(0.037, -1)
+    assert doc["base_radius_min_m"] == pytest.approx(r0_min(+1), abs=1e-5)
+    assert doc["base_radius_min_m"] == pytest.approx(0.03786, abs=1e-5)
+    assert abs(doc["base_radius_min_m"] - r0_min(-1, side=+1)) > 1e-3
+    R0 = doc["base_radius_m"]
+    th = theta(R0, -1)
     for name, m in (("rise", rise), ("return", ret)):
         k = int(np.argmax(np.abs(th[m])))
         assert doc["pressure_angle_extreme_deg"][name] == pytest.approx(th[m][k], abs=0.05)
         assert doc["pressure_angle_extreme_phi_deg"][name] == pytest.approx(phi[m][k], abs=0.2)
     # the corners: the centre profile P = C·e^{iφ} (σ = −1) turns there by the angle between its tangents just
     # before and just after; convex where that turn has the sense the whole profile winds in
-    psi0 = math.acos((a * a + l * l - 0.037 ** 2) / (2 * a * l))
-    P = (a + l * np.exp(1j * (math.pi - psi0 - psi))) * np.exp(1j * np.radians(phi))
+    psi0 = math.acos((a * a + l * l - R0 ** 2) / (2 * a * l))
+    P = (a + l * np.exp(1j * (math.pi - psi0 - psi))).conjugate() * np.exp(1j * np.radians(phi))
     winding = np.sign(np.sum((np.conj(P) * np.roll(P, -1)).imag))
     want = []
     for at in (160.0, 260.0):

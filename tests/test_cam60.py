@@ -4,7 +4,9 @@
 force's line (the profile's normal) passes through the instant centre P of the cam and the arm on the line
 of centres OA (ω_cam·OP = ω_arm·AP), and ϑ is its angle to the roller centre's velocity (square to AC);
 R0 by bisection, the centre profile's curvature by finite differences of its inversion; and the phase
-diagram's |OC₀| lettered with the R0 taken (stop 60: it read «R_0» alone)."""
+diagram's |OC₀| lettered with the R0 taken (stop 60: it read «R_0» alone). The arm stands under the line
+O–O1, the counter-clockwise layout mirrored for the clockwise cam (stop 60, cam60c: over it, the side that
+raises the rise's pressure angle, R0 min was 54,44 mm; under it 49,44)."""
 from __future__ import annotations
 
 import math
@@ -40,16 +42,17 @@ def _psi(phi):
     return psi, d1
 
 
-def _theta(R0, phi):
-    """ϑ (deg) at base radius R0 (mm): O at 0, the pivot A at (a, 0), the roller centre C = A + l·e^{i(π − β)},
-    β = ψ0 + ψ; P on OA where the cam (ω = σ) and the arm (ω = −dψ/dφ) have one velocity; the angle from
-    C's velocity as ψ grows to the line CP, + where it opposes the rise (the program's sign)."""
+def _theta(R0, phi, side=-1):
+    """ϑ (deg) at base radius R0 (mm): O at 0, the pivot A at (a, 0), the roller centre C = A + l·e^{−i(π − β)}
+    under O–O1 (``side`` −1; +1: C = A + l·e^{i(π − β)} over it), β = ψ0 + ψ; P on OA where the cam (ω = σ) and
+    the arm (ω = ∓dψ/dφ) have one velocity; the angle from C's velocity as ψ grows to the line CP, + where it
+    opposes the rise (the program's sign)."""
     psi, d1 = _psi(phi)
     beta = math.acos((A * A + L * L - R0 * R0) / (2 * A * L)) + psi
-    C = A + L * np.exp(1j * (np.pi - beta))
-    wa = -d1
+    C = A + L * np.exp(1j * side * (np.pi - beta))
+    wa = -side * d1
     p = wa * A / (wa - SIGMA)
-    ang = np.angle((p - C) / (1j * (C - A)))
+    ang = np.angle((p - C) / (side * 1j * (C - A)))
     return -np.degrees((ang + np.pi / 2) % np.pi - np.pi / 2)
 
 
@@ -57,9 +60,9 @@ PHI = np.linspace(0.0, RISE + FAR + RET, 56001)
 ON = (PHI <= RISE, PHI >= RISE + FAR)
 
 
-def _least() -> float:
+def _least(side: int = -1) -> float:
     def worst(R0):
-        th = np.abs(_theta(R0, PHI))
+        th = np.abs(_theta(R0, PHI, side))
         return max(th[ON[0]].max() / ALLOWED[0], th[ON[1]].max() / ALLOWED[1])
     lo, hi = A - L + 1e-6, A + L - 1e-6
     scan = np.linspace(lo, hi, 120)
@@ -72,52 +75,55 @@ def _least() -> float:
 
 
 def test_cam60_base_radius_pressure_angles_and_curvature_by_the_instant_centre(cam60):
-    """R0 min 54,444 mm (the rise binds: 35° at φ ≈ 43,3°); at the taken 55 mm ψ0 = 23,33° (the law of
-    cosines), the rise's largest ϑ 34,47°, the return's largest |ϑ| 20,63° at its end — the near dwell's
-    own angle 90° − ∠OCA —, ϑ at the 26 divisions; the centre profile's least radius of curvature 54,65 mm."""
+    """R0 min 49,441 mm with the arm under O–O1 (the return binds: 40° at φ ≈ 252°; over it 54,444 mm, the rise
+    binding); at the taken 50 mm ψ0 = 20,21° (the law of cosines), the rise's largest |ϑ| 26,10° at its start —
+    the near dwell's own angle ∠OCA − 90° —, the return's 39,39°, ϑ at the 26 divisions; the centre profile's
+    least radius of curvature 48,90 mm."""
     cam, sol, g, doc = cam60
     least = _least()
-    assert least == pytest.approx(54.4437, abs=1e-3)
+    assert least == pytest.approx(49.4411, abs=1e-3)
+    assert _least(+1) == pytest.approx(54.4437, abs=1e-3)            # the arm on the other side: larger
     assert doc["base_radius_min_m"] * 1000 == pytest.approx(least, abs=1e-3)
-    assert doc["base_radius_m"] == pytest.approx(0.055)
-    assert doc["arm_angle_deg"] == pytest.approx(math.degrees(math.acos((A * A + L * L - 55.0 ** 2) / (2 * A * L))))
-    th = _theta(55.0, PHI)
+    assert doc["base_radius_m"] == pytest.approx(0.050)
+    assert doc["arm_angle_deg"] == pytest.approx(math.degrees(math.acos((A * A + L * L - 50.0 ** 2) / (2 * A * L))))
+    th = _theta(50.0, PHI)
     for name, m in zip(("rise", "return"), ON):
         k = int(np.argmax(np.abs(th[m])))
-        assert abs(doc["pressure_angle_extreme_deg"][name]) == pytest.approx(abs(th[m][k]), abs=0.01)
+        assert doc["pressure_angle_extreme_deg"][name] == pytest.approx(th[m][k], abs=0.01)
         assert doc["pressure_angle_extreme_phi_deg"][name] == pytest.approx(math.degrees(PHI[m][k]), abs=0.05)
-    assert doc["pressure_angle_extreme_deg"]["rise"] == pytest.approx(34.47, abs=0.01)
-    gamma = math.acos((55.0 ** 2 + L * L - A * A) / (2 * 55.0 * L))       # ∠OCA at the near dwell
-    assert abs(doc["pressure_angle_extreme_deg"]["return"]) == pytest.approx(math.degrees(gamma) - 90.0, abs=0.01)
+    assert doc["pressure_angle_extreme_deg"]["return"] == pytest.approx(-39.39, abs=0.01)
+    gamma = math.acos((50.0 ** 2 + L * L - A * A) / (2 * 50.0 * L))       # ∠OCA at the near dwell
+    assert abs(doc["pressure_angle_extreme_deg"]["rise"]) == pytest.approx(math.degrees(gamma) - 90.0, abs=0.01)
+    assert doc["pressure_angle_extreme_phi_deg"]["rise"] == pytest.approx(0.0, abs=0.05)
     for p in doc["positions"]:
-        want = float(_theta(55.0, [math.radians(p["phi_deg"])])[0])
+        want = float(_theta(50.0, [math.radians(p["phi_deg"])])[0])
         assert p["exact"]["pressure_angle_deg"] == pytest.approx(want, abs=0.01), p["number"]
     # the centre profile P(φ) = C(φ)·e^{−iσφ}: its least radius of curvature where it is convex
     ph = np.linspace(0.0, 2 * np.pi, 360001)[:-1]
     psi, _ = _psi(ph)
-    beta = math.acos((A * A + L * L - 55.0 ** 2) / (2 * A * L)) + psi
-    P = (A + L * np.exp(1j * (np.pi - beta))) * np.exp(-1j * SIGMA * ph)
+    beta = math.acos((A * A + L * L - 50.0 ** 2) / (2 * A * L)) + psi
+    P = (A + L * np.exp(-1j * (np.pi - beta))) * np.exp(-1j * SIGMA * ph)
     h = ph[1] - ph[0]
     P1, P2 = (np.roll(P, -1) - np.roll(P, 1)) / (2 * h), (np.roll(P, -1) - 2 * P + np.roll(P, 1)) / h ** 2
     k = (P1.conjugate() * P2).imag / np.abs(P1) ** 3
     convex = k * np.sign(np.median(k)) > 0
     assert doc["curvature_min_m"] * 1000 == pytest.approx(float(np.min(1 / np.abs(k[convex]))), abs=0.01)
-    assert doc["curvature_min_m"] * 1000 == pytest.approx(54.65, abs=0.01)
+    assert doc["curvature_min_m"] * 1000 == pytest.approx(48.90, abs=0.01)
 
 
 @pytest.mark.parametrize("lang", ["uk", "en"])
 def test_cam60_phase_diagram_letters_r0_with_the_radius_taken(cam60, lang):
-    """The rocking phase diagram's |OC₀| (O on its arc about the pivot at the R0 taken, O_min 1,6 mm off at the
-    smallest) is lettered «R_0 = 55 мм» (en «mm»), the length drawn times μ, not «R_0» alone."""
+    """The rocking phase diagram's |OC₀| (O on its arc about the pivot at the R0 taken, O_min off it at the
+    smallest) is lettered «R_0 = 50 мм» (en «mm»), the length drawn times μ, not «R_0» alone."""
     from graphplan.drawing.cam import phase_diagram
     cam, sol, g, doc = cam60
     rec = phase_diagram(sol, g, lang)
     mu = rec.scales["mu_phase"] * 1000                                     # mm of the cam a drawn mm
     (seg,) = [q for q in rec.items if q.step == "R0" and q.kind == "segment"]
     p, q = (complex(*z) for z in seg.points)
-    assert abs(q - p) * mu == pytest.approx(55.0, abs=1e-6)
+    assert abs(q - p) * mu == pytest.approx(50.0, abs=1e-6)
     texts = [q.text for q in rec.items if q.kind == "text"]
-    assert f"R_0 = 55 {'мм' if lang == 'uk' else 'mm'}" in texts and "R_0" not in texts
+    assert f"R_0 = 50 {'мм' if lang == 'uk' else 'mm'}" in texts and "R_0" not in texts
 
 
 @pytest.mark.parametrize("row", [7.0, 6.5])
@@ -179,7 +185,7 @@ def test_omegas_arc_stands_inside_the_working_profile(which, request):
     """ω's arrow on the profile: an arc about O at least 5 mm inside the working profile (measured off the
     record: the working profile's nearest point to O, R_0 − r = 21 mm drawn for cg60's cam, its 15-mm roller on
     a 36-mm base circle) — at 0.6 R_0 = 21.6 mm it ran along that profile's line (stop 60); CAM60's (R_0 − r =
-    43 mm) stays at 0.6 R_0 = 33 mm."""
+    38 mm) stays at 0.6 R_0 = 30 mm."""
     from graphplan.drawing.cam import profile_drawing
     cam, sol, g, doc = request.getfixturevalue(which)
     rec = profile_drawing(sol, g, "uk")

@@ -103,7 +103,8 @@ def _zero_clear(data: dict, fmt: str) -> None:
     assert len(zero) == 1
     ink = zero[0].ink()
     mid = complex((ink[0] + ink[2]) / 2, (ink[1] + ink[3]) / 2)
-    assert mid.real < A.real and mid.imag < A.imag                      # below and left of O₁
+    # below and left of O₁ (a clockwise cam's layout mirrored about O–O1, stop 60: above and left, by the support)
+    assert mid.real < A.real and (mid.imag - A.imag) * cam.sense < 0
     area = box(*ink)
     for p in rec.items:
         if p.kind in ("segment", "vector", "polyline") and len(p.points) > 1:

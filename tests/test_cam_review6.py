@@ -140,7 +140,8 @@ def test_the_notes_say_the_corners_rho_over_the_smooth_parts_and_dpsi(lang):
     assert "ds/dφ" not in text and "d^{2}s" not in text          # a rocking follower: ψ, never s
     assert "dψ/dφ" in text
     smooth = "на гладких ділянках" if lang == "uk" else "over the smooth parts"
-    curv = next(x for x in lines if "ρ_{min}" in x and "32" in x)
+    rho = f"{doc['curvature_min_m'] * 1000:.2f}".replace(".", "," if lang == "uk" else ".")
+    curv = next(x for x in lines if "ρ_{min}" in x and rho in x)      # 37,08 mm (the arm under O–O1, stop 60)
     assert smooth in curv
     corners = next(x for x in lines if "140°" in x and "ρ = 0" in x)      # not the shocks line (stop 55), which names 140° too
     jump = f"{24 / 90 * 180 / math.pi:.2f}".replace(".", "," if lang == "uk" else ".")

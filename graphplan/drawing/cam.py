@@ -926,7 +926,7 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
             # the other side (beside them on one line it read "0 O_1"), off the pivots' circle
             # — placed at once, clear of every line drawn (position 1's arm ran under a fixed spot: review 11),
             # the others then placed round it
-            _zero_by_support(rec, tip, text, feet)
+            _zero_by_support(rec, tip, text, feet, cam.sense)
             continue
         labels.append(LabelRequest(tip, text, toward=tip / abs(tip) if abs(tip) else 1j, size=NUMBER,
                                    optional=True))
@@ -935,7 +935,7 @@ def profile_drawing(sol: Solution, g: CamConstruction, lang: str) -> Record:
     return rec
 
 
-def _zero_by_support(rec: Record, A: complex, text: str, feet) -> None:
+def _zero_by_support(rec: Record, A: complex, text: str, feet, sense: int = 1) -> None:
     """The start's number at a rocking follower's pivot O_1 (``A``), below and left of the support as
     docs/cams.md asks: the first spot, turning from below-left (225°) out to the left and down and
     stepping out from 5 to 16 mm, whose lettering keeps 0.6 mm off every line and dot drawn so far
@@ -964,6 +964,8 @@ def _zero_by_support(rec: Record, A: complex, text: str, feet) -> None:
     for r in np.arange(5.0, 16.5, 1.0):
         for turn in (0, 15, -15, 30, -30, 45, -45, 60):
             u = cmath.exp(1j * math.radians(225.0 + turn))
+            if sense < 0:       # a clockwise cam's layout mirrored about O–O1: the support over O_1
+                u = u.conjugate()
             z = A + r * u
             trial = rec.label((z.real, z.imag - NUMBER / 2), text, size=NUMBER, anchor="middle", layer=LAYER,
                               step="division 0")
@@ -1066,14 +1068,17 @@ def _follower(rec: Record, sol: Solution, g: CamConstruction, C0: complex, label
         A = complex(cam.centre_distance / mu, 0.0)
         d = (C0 - A) / abs(C0 - A)
         rec.segment(_pt(A), _pt(C0 - r * d if r else C0), role="link", layer=LAYER, step="arm")
-        for z in (A + complex(-3.5, -5.0), A + complex(3.5, -5.0)):
+        # the support on the side of O–O1 away from the arm: under O_1 for a counter-clockwise cam, over it
+        # for a clockwise one (the whole layout mirrored about O–O1: exact.cam.centre_path, stop 60)
+        m = 1.0 if cam.sense > 0 else -1.0
+        for z in (A + complex(-3.5, -5.0 * m), A + complex(3.5, -5.0 * m)):
             rec.segment(_pt(A), _pt(z), role="frame", width=0.35, layer=LAYER)
-        rec.segment(_pt(A + complex(-5.0, -5.0)), _pt(A + complex(5.0, -5.0)), role="frame", layer=LAYER)
+        rec.segment(_pt(A + complex(-5.0, -5.0 * m)), _pt(A + complex(5.0, -5.0 * m)), role="frame", layer=LAYER)
         for k in range(5):
-            z = A + complex(-5.0 + 2.5 * k, -5.0)
-            rec.segment(_pt(z), _pt(z + complex(-1.8, -1.8)), role="hatch", layer=LAYER)
+            z = A + complex(-5.0 + 2.5 * k, -5.0 * m)
+            rec.segment(_pt(z), _pt(z + complex(-1.8, -1.8 * m)), role="hatch", layer=LAYER)
         rec.point(_pt(A), role="joint", layer=LAYER, step="pivot")
-        labels.append(LabelRequest(A, "O_1", toward=1 + 1j, size=TEXT))
+        labels.append(LabelRequest(A, "O_1", toward=1 + 1j * m, size=TEXT))
         _swing(rec, sol, A, C0, r, labels, lang)
         return
     up = 1j
@@ -1161,17 +1166,20 @@ def _swing(rec: Record, sol: Solution, A: complex, C0: complex, r: float, labels
     cam = sol.cam
     l = abs(C0 - A)
     start = cmath.phase(C0 - A)
-    top = A + (C0 - A) * cmath.exp(-1j * cam.stroke)         # ψ grows clockwise about O_1 (centre_path)
+    sig = 1 if cam.sense > 0 else -1
+    # ψ grows clockwise about O_1 for a counter-clockwise cam, counter-clockwise for a clockwise one (centre_path)
+    top = A + (C0 - A) * cmath.exp(-1j * sig * cam.stroke)
     d = (top - A) / l
     rec.segment(_pt(A), _pt(top - r * d if r else top), role="projection", layer=LAYER, step="swing top arm")
     if r:
         rec.circle(_pt(top), r, role="projection", layer=LAYER, step="swing top roller")
     over = min(0.25 * cam.stroke, math.radians(4.0))
-    rec.arc(_pt(A), l, math.degrees(start - cam.stroke - over), math.degrees(start + over), role="trajectory",
+    lo, hi = sorted((start, start - sig * cam.stroke))
+    rec.arc(_pt(A), l, math.degrees(lo - over), math.degrees(hi + over), role="trajectory",
             layer=LAYER, step="swing path")
     rd = SWING_ARC * l
-    arc_dimension(rec, A, rd, start - cam.stroke, start, "swing psi_max")
-    m = cmath.exp(1j * (start - cam.stroke / 2))
+    arc_dimension(rec, A, rd, lo, hi, "swing psi_max")
+    m = cmath.exp(1j * (start - sig * cam.stroke / 2))
     labels.append(LabelRequest(A + rd * m, f"ψ_max = {num(math.degrees(cam.stroke), lang, 4)}°",
                                toward=m, size=TEXT, step="swing psi_max"))
 

@@ -7,7 +7,10 @@ displacement from its nearest position: metres (translating) or radians (rocking
 its analogues ds/dφ and d²s/dφ² are per radian of φ. In the fixed frame the cam's centre O is the
 origin; a translating follower's axis is vertical at x = σ·e (σ = +1 when the cam turns counter-
 clockwise), its roller centre at C = (σe, s0 + s) with s0 = √(R0² − e²); a rocking follower's arm of
-length l turns about A = (a, 0) and its roller centre is C = A + l·e^{i(π − ψ0 − s)}, |C| = R0 at s = 0.
+length l turns about A = (a, 0) and its roller centre is C = A + l·e^{iσ(π − ψ0 − s)}, |C| = R0 at s = 0: a
+clockwise cam's whole layout is the counter-clockwise one's mirrored about the line O–O1 (the arm on the side
+the phase diagram ψ–dψ/dφ finds favourable for the turn: stop 60, CAM60's R0min 54.44 mm with the arm
+above O–O1, 49.44 mm mirrored), so ϑ, ρ and R0min are the ccw cam's and the profile its mirror image.
 The centre (theoretical) profile is the path of C in the cam's own frame (the inversion: the frame
 turned back by the cam's turn), P(φ) = C(φ)·e^{−iσφ}; the working profile is its inner offset by the
 roller radius (the envelope of the roller circles). The pressure angle ϑ is the angle between the
@@ -215,6 +218,8 @@ def centre_path(cam: Cam, g: Geometry, s: Array, v: Array, a: Array) -> tuple[Ar
         C1 = -1j * l * v * w
         C2 = l * (-v * v - 1j * a) * w
         u = -1j * w
+        if sig < 0:     # a clockwise cam: the counter-clockwise layout mirrored about the line O–O1
+            return C.conjugate(), C1.conjugate(), C2.conjugate(), u.conjugate()
         return C, C1, C2, u
     s0 = math.sqrt(g.R0 ** 2 - g.e ** 2)
     C = sig * g.e + 1j * (s0 + s)
