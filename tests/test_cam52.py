@@ -115,8 +115,8 @@ def test_the_axis_side_and_both_phases_effect_are_said_and_drawn(cam52, lang):
     raises = here[0] > there[0]
     assert here[1] < there[1] if raises else here[1] > there[1]
     want = ("збільшує кут тиску на підйомі й зменшує" if raises else "зменшує кут тиску на підйомі й збільшує") \
-        if lang == "uk" else ("raising the rise's pressure angle and lowering the return's" if raises
-                              else "lowering the rise's pressure angle and raising the return's")
+        if lang == "uk" else ("raising the pressure angle of the rise and lowering that of the return" if raises
+                              else "lowering the pressure angle of the rise and raising that of the return")
     assert want in line
     assert ("R_0 був найменшим" if lang == "uk" else "chosen for the smallest R_0") in line
     # drawn on that side: the follower's axis on the profile at x = ±e/μ_l from O
