@@ -80,6 +80,7 @@ def test_a_clockwise_rocking_cam_is_the_counter_clockwise_one_mirrored(case):
     assert C0.imag < 0 and abs(C0) == pytest.approx(R0, rel=1e-12)
 
 
+@pytest.mark.slow     # 7 s: 12 root-finds; the default suite has the mirror itself (ϑ equal at every φ) and CAM60's R0
 @settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(rocking_cams())
 def test_a_clockwise_rocking_cams_smallest_base_radius_is_the_counter_clockwise_ones(case):
