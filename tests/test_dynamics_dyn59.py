@@ -37,6 +37,19 @@ W1 = 95 * math.pi / 30
 DELTA = 0.033
 
 
+
+def energy_flywheel(energy, inertia, w1: float, delta: float, bracket: tuple[float, float], most_T0: float) -> float:
+    """The energy method, independent of the program: ω = √(2(T0 + ΔT)/(I* + J)) over the turn; T0 found so that
+    ω's mean (max + min)/2 is ω1, then J so that (max − min)/ω1 is δ (brentq on both; J within ``bracket``)."""
+    def unevenness(J: float) -> float:
+        def mean_gap(T0: float) -> float:
+            w = np.sqrt(2 * (T0 + energy) / (inertia + J))
+            return (w.max() + w.min()) / 2 - w1
+        T0 = brentq(mean_gap, -energy.min() + 1e-12, most_T0)
+        w = np.sqrt(2 * (T0 + energy) / (inertia + J))
+        return (w.max() - w.min()) / w1
+    return brentq(lambda j: unevenness(j) - delta, *bracket, xtol=1e-10)
+
 def _geometry(th: np.ndarray) -> dict[str, np.ndarray]:
     """Points (complex, m) and angles at the crank's angles ``th`` from the x axis (the upper assembly, B = 1)."""
     A = R * np.exp(1j * th)
@@ -134,14 +147,7 @@ def test_link59_flywheel_by_the_energy_method(link59, truth):
     assert link59.cycle.driving == pytest.approx(drive, rel=1e-5)
     energy = drive * turn - work
 
-    def delta(J: float) -> float:
-        def mean_gap(T0: float) -> float:
-            w = np.sqrt(2 * (T0 + energy) / (inertia + J))
-            return (w.max() + w.min()) / 2 - W1
-        T0 = brentq(mean_gap, -energy.min() + 1e-12, 1e7)
-        w = np.sqrt(2 * (T0 + energy) / (inertia + J))
-        return (w.max() - w.min()) / W1
-    J = brentq(lambda j: delta(j) - DELTA, 5.0, 1e3, xtol=1e-10)
+    J = energy_flywheel(energy, inertia, W1, DELTA, (5.0, 1e3), 1e7)
     assert link59.flywheel + link59.constant == pytest.approx(J, rel=1e-4)
     # the 1000-rpm line's 4АМ100L6 (2.2 kW, 949 rpm) for P = max M*_c·ω1/η = 1.72 kW; its rotor reduced
     m = link59.drive.motor

@@ -19,12 +19,13 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from scipy.optimize import brentq, minimize_scalar
+from scipy.optimize import minimize_scalar
 
 from conftest import scene_study
 
 sys.path.insert(0, str(Path(__file__).parent))
 from review_scenes import LINK60  # noqa: E402
+from test_dynamics_dyn59 import energy_flywheel  # noqa: E402  (the energy method, written once)
 
 R, L2, L4, L5, X_GUIDE = 0.065, 0.24, 0.20, 0.13, 0.03
 O2 = 0.22 + 0.30j
@@ -134,14 +135,7 @@ def test_link60_work_flywheel_and_motor_by_the_energy_method(link60, truth):
     assert link60.cycle.driving == pytest.approx(drive, rel=1e-5)
     energy = drive * turn - work
 
-    def delta(J: float) -> float:
-        def mean_gap(T0: float) -> float:
-            w = np.sqrt(2 * (T0 + energy) / (inertia + J))
-            return (w.max() + w.min()) / 2 - W1
-        T0 = brentq(mean_gap, -energy.min() + 1e-12, 1e6)
-        w = np.sqrt(2 * (T0 + energy) / (inertia + J))
-        return (w.max() - w.min()) / W1
-    J = brentq(lambda j: delta(j) - DELTA, 1.0, 1e3, xtol=1e-10)
+    J = energy_flywheel(energy, inertia, W1, DELTA, (1.0, 1e3), 1e6)
     assert link60.flywheel + link60.constant == pytest.approx(J, rel=1e-4)
     m = link60.drive.motor
     assert (m.name, m.rpm_sync, m.power_kW) == ("4АМ71В4", 1500, 0.75)
