@@ -8971,3 +8971,149 @@ delta = 0.05
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+# Stop 61, the lead's check (link61.toml).
+LINK61 = '''
+# Stop 61 (the lead's check): a crank-rocker four-bar whose BELL-CRANK rocker O2BD (a triangular link,
+# D off the line O2B) drives a slider E on a vertical guide through the rod DE:
+# I(0-1) -> II(2-3) RRR -> II(4-5) RRP; the crank CLOCKWISE at 120 rpm; a 900 N resistance force on the
+# slider over its working stroke; masses by length; dynamics to a 1000-rpm motor, δ = 1/20.
+title = "Шестиланковий механізм з кутовим важелем"
+title_en = "Six-bar mechanism with a bell crank"
+designation = "ТММ.КП.61.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-61"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.28, 0.0]
+
+[frame.guides]
+y = { through = [0.44, 0], angle_deg = 90, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.07
+rpm = 120
+direction = "cw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.26
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.16
+shape = { D = [-0.06, -0.11] }
+points = { S3 = 0.4 }
+
+[[link]]
+name = "DE"
+number = 4
+joints = ["D", "E"]
+length = 0.22
+points = { S4 = 0.5 }
+
+[[link]]
+name = "E"
+number = 5
+joints = ["E"]
+slides_on = "y"
+mass = 6
+
+[branch]
+B = 1
+E = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [2]
+force_phi_deg = 75
+
+[loads]
+g = 9.81
+mass_per_length = 20
+inertia_factor = 0.1
+
+[[force]]
+point = "E"
+magnitude = 900
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 1000
+'''
+
+
+# Stop 61, the lead's check (cam61.toml).
+CAM61 = '''
+# Stop 61 (the lead's check): a translating KNIFE-EDGE follower, the cam counter-clockwise, a trapezoidal
+# rise of 150°, a short far dwell of 20°, a cycloidal return of 130°, a near dwell of 60°; stroke 30 mm,
+# offset "auto", 10 divisions, [ϑ] 30°/35°.
+title = "Кулачковий механізм з ножовим штовхачем (перевірка 61)"
+title_en = "Cam with a knife-edge translating follower (check 61)"
+designation = "ТММ.КМ.61.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-61"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.03
+offset = "auto"
+roller_radius = 0
+phases_deg = { rise = 150, dwell_far = 20, return = 130, dwell_near = 60 }
+laws = { rise = "trapezoidal", return = "cycloidal" }
+pressure_angle_deg = { rise = 30, return = 35 }
+rpm = 200
+direction = "ccw"
+divisions = 10
+'''
+
+
+# Stop 61, the lead's check (gears61.toml).
+GEARS61 = '''
+# Stop 61 (the lead's check): a pair 16/41 with GIVEN shifts x1 = 0.3, x2 = -0.1, m = 5 mm, and a type-B
+# train with GIVEN teeth z = 20, 44, 22, 86 (u1H = 1 + 44·86/(20·22) = 9.6), three planets, m = 2 mm, 960 rpm.
+title = "Зубчаста передача 16/41 і дворядний планетарний редуктор (перевірка 61)"
+title_en = "A gear pair 16/41 and a two-row planetary reducer (check 61)"
+designation = "ТММ.ЗП.61.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-61"
+organisation = "НУБіП України"
+
+[gears]
+z = [16, 41]
+module = 0.005
+shifts = [0.3, -0.1]
+
+[planetary]
+type = "B"
+z = [20, 44, 22, 86]
+planets = 3
+module = 0.002
+rpm = 960
+'''
