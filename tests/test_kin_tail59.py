@@ -9,9 +9,9 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from graphplan.drawing.layout import Leaf, Shelf, flow
-from reading import in_reading_order
 from graphplan.sheets.compose import field_of, keep_out, later_keep
 from graphplan.sheets.form import form
+from reading import in_reading_order
 
 F = form("A3")
 REGION, KEEP, LATER = field_of(F), keep_out(F), later_keep(F)
