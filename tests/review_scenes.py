@@ -9117,3 +9117,95 @@ planets = 3
 module = 0.002
 rpm = 960
 '''
+
+
+# Stop 61: kin61's own: an opposed (boxer) twin-cylinder compressor, two pistons on one horizontal line through O1
+KIN61_BOXER = '''# kin61's own (stop 61): an opposed (boxer) two-cylinder compressor — one crank O1A drives two connecting
+# rods AB and AC pinned at the crank pin A, the pistons B and C on ONE horizontal line through O1, B to the
+# right and C to the left (the 180° V of the textbooks' opposed engines): I(0-1) -> II(2-3) ВВП -> II(4-5)
+# ВВП; the crank counter-clockwise at 480 rpm; the gas forces on the pistons' compression strokes
+# (outwards: working_stroke = "to_max"); masses by length; dynamics to a 1500-rpm motor, δ = 1/30.
+title = "Опозитний двоциліндровий компресор"
+title_en = "Opposed twin-cylinder compressor"
+designation = "ТММ.КП.61.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-61"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+
+[frame.guides]
+x = { through = [0, 0], angle_deg = 0, title_uk = "правого циліндра", title_en = "of the right cylinder" }
+y = { through = [0, 0], angle_deg = 180, title_uk = "лівого циліндра", title_en = "of the left cylinder" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 480
+direction = "ccw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.24
+points = { S2 = 0.35 }
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "x"
+mass = 3
+
+[[link]]
+name = "AC"
+number = 4
+joints = ["A", "C"]
+length = 0.24
+points = { S4 = 0.35 }
+
+[[link]]
+name = "C"
+number = 5
+joints = ["C"]
+slides_on = "y"
+mass = 3
+
+[positions]
+count = 12
+start = "working"
+working_stroke = "to_max"
+accel = [2]
+force_phi_deg = 60
+output = "B"
+
+[loads]
+g = 9.81
+mass_per_length = 20
+inertia_factor = 0.1
+
+[[force]]
+point = "B"
+magnitude = 1200
+stroke = "working"
+direction = "oppose"
+
+[[force]]
+point = "C"
+magnitude = 1200
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.033
+efficiency = 0.8
+synchronous_rpm = 1500
+'''

@@ -11,6 +11,7 @@ from hypothesis import given, settings, strategies as st
 from graphplan.drawing.layout import Leaf, Shelf, flow
 from graphplan.sheets.compose import field_of, keep_out, later_keep
 from graphplan.sheets.form import form
+from reading import in_reading_order
 
 F = form("A3")
 REGION, KEEP, LATER = field_of(F), keep_out(F), later_keep(F)
@@ -23,7 +24,8 @@ def _laid(items, shelf=True, first=None):
 
 def _check(pages, names):
     """Every item once, in order over the sheets; inside the field, clear of the title block, no two
-    boxes meeting; on each sheet each next item right of the last one's left edge or under it."""
+    boxes meeting; on each sheet each next item right of the last one's left edge or under it, and
+    the items in an order a reader takes their boxes in (``in_reading_order``)."""
     placed = [(k, leaf.name, b) for k, page in enumerate(pages) for leaf, b in page if leaf.name]
     assert [n for _, n, _ in placed] == names
     x0, y0, x1, y1 = REGION
@@ -38,6 +40,23 @@ def _check(pages, names):
                 assert not (a[0] < b[2] - 1e-6 and b[0] < a[2] - 1e-6 and a[1] < b[3] - 1e-6 and b[1] < a[3] - 1e-6)
         for a, b in zip(bs, bs[1:]):        # reading order: the next to the right, or lower
             assert b[0] >= a[0] - 1e-6 or b[3] <= a[1] + 1e-6
+        # and no item before one that a reader takes first (tests/reading.py, from the boxes alone:
+        # left of it sharing some height, or above it sharing some width; stop 61)
+        assert in_reading_order(bs) == list(range(len(bs))), bs
+
+
+def test_a_reader_takes_a_line_of_columns_down_each_column():
+    """The boxes of a generated shaper's A3 sheet 4 (stop 61, mm): the acceleration plan over
+    Table 1, and Tables 2 and 3 down the column beside them. Table 1 is left of Table 2 in a band
+    of height they share, Table 2 over Table 3 in a strip of width they share: read 1, 2, 3 — the
+    set test had sorted the tops row-wise (2, 1, 3). A Table 2 left of Table 1 in one band, or
+    over it in one strip, is out of order."""
+    plan, t1 = (29.9, 147.7, 299.3, 268.7), (29.9, 28.3, 299.3, 141.7)
+    t2, t3 = (315.1, 120.7, 405.1, 253.9), (315.1, 43.1, 405.1, 85.0)
+    assert in_reading_order([plan, t1, t2, t3]) == [0, 1, 2, 3]
+    assert in_reading_order([t2, t1]) == [1, 0] and in_reading_order([t3, t2]) == [1, 0]
+    assert in_reading_order([(0, 150, 100, 200), (200, 0, 300, 100)]) == [0, 1]     # diagonal: either
+    assert in_reading_order([(200, 0, 300, 100), (0, 150, 100, 200)]) == [0, 1]
 
 
 def test_table_4_and_the_notes_join_tables_1_to_3():

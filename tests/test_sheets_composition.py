@@ -343,18 +343,22 @@ TITLE_NO = re.compile(r"^(?:Таблиця|Table) (\d+(?:\.\d+)?)\. ")
 def table_numbers(sheet) -> list[str]:
     """The numbers of the sheet's (or set's) table titles in reading order, sheet by sheet: on one
     sheet the tables' column is read column by column (a title more than 20 mm to the right of
-    another starts a new column), top to bottom; a set's sheets are read row by row (the rows of
-    drawings and tables as they flow), left to right."""
+    another starts a new column), top to bottom; on a set's sheets, by their boxes (tests/reading.py:
+    a table left of another in a band of height they share, or above it in a strip of width they
+    share, is read first; of two sharing neither, either may be): the numbers as numbered where
+    that is a reading order, else one that shows where it is not (stop 61: the tops sorted
+    row-wise read a drawing over Table 1 beside Tables 2, 3 down the next column as 2, 1, 3 — a
+    reader down the columns reads 1, 2, 3, and the test had read the stacked line as rows)."""
+    from reading import in_reading_order
     out = []
     for page in sheet.pages:
         titles = [(p.bounds()[0], -p.bounds()[3], TITLE_NO.match(p.text).group(1))
                   for p in page.record.items if p.kind == "text" and TITLE_NO.match(p.text)]
         if sheet.more or len(sheet.pages) > 1:
-            def row(t):
-                box = next(pl.box for pl in page.placed if pl.box[0] - 1 <= t[0] <= pl.box[2] + 1
-                           and pl.box[1] - 1 <= -t[1] <= pl.box[3] + 1)
-                return (-round(box[3], 1), t[0])
-            out += [n for _, _, n in sorted(titles, key=row)]
+            titles.sort(key=lambda t: tuple(int(v) for v in t[2].split(".")))
+            boxes = [next(pl.box for pl in page.placed if pl.box[0] - 1 <= t[0] <= pl.box[2] + 1
+                          and pl.box[1] - 1 <= -t[1] <= pl.box[3] + 1) for t in titles]
+            out += [titles[k][2] for k in in_reading_order(boxes)]
             continue
         titles.sort()
 
