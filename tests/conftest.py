@@ -205,6 +205,10 @@ THINNED = {
     # stop 56: the six-bar shaper's sheets (the most scales) in both languages; the crank-slider's and the
     # four-bar's English sheets, composed and numbered for this test alone, slow
     "test_one_scale_symbol_one_value": lambda case: case == "shaper",
+    # stop 61: speed60's equivalences of a fast search and the old chain of searches, on random drawings
+    # (4 s of the default run): the first seeds there, every seed in the slow suite
+    "test_far_with_several_checks_is_the_first_search_that_finds": 6,
+    "test_a_force_letter_among_arrows_is_placed_as_the_four_searches_placed_it": 8,
 }
 
 
