@@ -4,6 +4,7 @@ d²ψ/dφ² diagram as arrows to ±∞; the centre profile's corners where dψ/d
 a rocking follower's dψ/dφ, never ds/dφ; the true minus in the notes; both pressure bands lettered."""
 from __future__ import annotations
 
+import functools
 import math
 import re
 import tomllib
@@ -51,7 +52,10 @@ def _cam(text: str):
     return build(tomllib.loads(text))
 
 
+@functools.lru_cache(maxsize=None)
 def _solved(text: str, n: int = 8):
+    """The cam solved and constructed, once per text for the module's tests (ROCK's was solved six
+    times, 0,3 s of CPU each): read it, never change it."""
     sol = solve(_cam(text))
     return sol, construct(sol, n)
 

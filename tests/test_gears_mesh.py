@@ -36,18 +36,27 @@ def wheels(mesh):
 
 def contacts(a: Polygon, b: Polygon, tol: float = 0.02) -> list[Point]:
     """The nearest point to b's outline on each stretch of a's outline within ``tol`` mm of it."""
+    import numpy as np
+    import shapely
     ring, other = a.exterior, b.exterior
     n = 20000
+    # the 20000 points interpolated along the outline's vertices at once, the distances measured only
+    # where the prepared outline is within ``tol`` (a shapely call a point took 0,5–0,9 s a pair)
+    xy = np.asarray(ring.coords)
+    along = np.concatenate(([0.0], np.cumsum(np.hypot(*np.diff(xy, axis=0).T))))
+    at = along[-1] * np.arange(n) / n
+    points = shapely.points(np.interp(at, along, xy[:, 0]), np.interp(at, along, xy[:, 1]))
+    shapely.prepare(other)
+    near = np.flatnonzero(shapely.dwithin(points, other, tol))
+    dist = np.full(n, np.inf)
+    dist[near] = shapely.distance(points[near], other)
     runs: list[list[tuple[float, Point]]] = []
     last = -10
-    for i in range(n):
-        q = ring.interpolate(ring.length * i / n)
-        d = q.distance(other)
-        if d < tol:
-            if i - last > 2:
-                runs.append([])
-            runs[-1].append((d, q))
-            last = i
+    for i in np.flatnonzero(dist < tol):
+        if i - last > 2:
+            runs.append([])
+        runs[-1].append((float(dist[i]), points[i]))
+        last = i
     return [min(r, key=lambda t: t[0])[1] for r in runs]
 
 

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import re
 
+import pytest
+
 from conftest import composed, scene_study
 from graphplan.sheets.compose import SheetOptions
 from graphplan.sheets.form import form
@@ -13,6 +15,11 @@ from review_scenes import PUMP45
 PERCENT = re.compile(r"^[−-]?\d+,\d\d\*?$")
 
 
+# slow since stop 61 (3,3 s: PUMP45's sheet composed for this test alone): the pump's largest error is
+# no longer one whose printed pair and unrounded δ differ (4,1083 % either way), so the default run's
+# test_sheets_composition::test_notes_largest_error_is_the_tables[shaper] (the note's figure is the
+# tables' largest printed δ, on the shaper's sheet the default run builds anyway) makes the same check
+@pytest.mark.slow
 def test_the_notes_largest_error_is_one_the_tables_print():
     """(The sheet composed alone, ``conftest.composed``: numbered in its project it would compose the
     pump's force and dynamics sheets to count them, 24 of the test's 27 s of CPU.)"""

@@ -32,7 +32,11 @@ def _study(name: str):
     return example(name)
 
 
-@pytest.fixture(scope="module", params=["shaper", "slotter", "fourbar"])
+# the slotter's plan (12 s of CPU: its search the longest of the three) served the default run only
+# test_hodograph_positions_each_numbered_merged_only_where_crowded, whose check the shaper's case makes on
+# a plan a quarter as costly (neither merges a run: every number stands alone); the slotter's cases run
+# in the slow suite with its force-sheet tests (test_forces_sheet), which read the same plan
+@pytest.fixture(scope="module", params=["shaper", pytest.param("slotter", marks=pytest.mark.slow), "fourbar"])
 def planned(request):
     """The A1 force sheet's plan and its drawings, as the sheet draws them."""
     from graphplan.sheets import forces as sf

@@ -42,7 +42,9 @@ def test_the_review_s_title_block():
     assert romanize("ЩЕРБАК") == "SHCHERBAK" and romanize("Щербак") == "Shcherbak" and romanize("ХПІ") == "KhPI"
 
 
-@settings(max_examples=300, deadline=None)
+# 100 random texts (300 took 1,2 s of the default run): the resolution's own examples and the title
+# block's above fix the mapping, the digits and the signs kept; these the properties over any text
+@settings(max_examples=100, deadline=None)
 @given(hs.text(alphabet=hs.characters(min_codepoint=0x20, max_codepoint=0x52f, blacklist_categories=("Cs",)),
                max_size=40))
 def test_romanised_text_has_no_cyrillic_and_latin_stays(text):
