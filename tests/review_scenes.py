@@ -9209,3 +9209,78 @@ delta = 0.033
 efficiency = 0.8
 synchronous_rpm = 1500
 '''
+
+
+# frc61b: a crank-rocker whose rocker O2B, extended past B to C, drives a slider E on a horizontal guide
+# through the rod CE (a rocking-conveyor six-bar: I(0-1) -> II(2-3) RRR -> II(4-5) RRP), 700 N against the
+# slider's working stroke — test_forces_aux61's generated "rocker-slider", kept for the reviews
+FRC61B_ROCKER_SLIDER = '''
+title = "Шестиланковий механізм"
+title_en = "Six-bar mechanism"
+designation = "ТММ.61.02.000"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.2, 0.0]
+
+[frame.guides]
+x = { through = [0, 0.2], angle_deg = 0 }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 100
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.22
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.15
+shape = { C = [0.21, 0] }
+points = { S3 = 0.5 }
+
+[[link]]
+name = "CE"
+number = 4
+joints = ["C", "E"]
+length = 0.3
+points = { S4 = 0.5 }
+
+[[link]]
+name = "E"
+number = 5
+joints = ["E"]
+slides_on = "x"
+mass = 5
+
+[branch]
+B = 1
+E = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 45
+
+[loads]
+g = 9.81
+mass_per_length = 20
+inertia_factor = 0.1
+
+[[force]]
+point = "E"
+magnitude = 700
+stroke = "working"
+direction = "oppose"
+'''

@@ -775,12 +775,14 @@ def _tree(shape: str, leaves: dict[str, list[Leaf]], hcols: int, C: Leaf, hrow: 
 
 
 def _levels(families: dict[str, Family], fits, order, largest=None, start=None,
-            led: dict[str, str] | None = None) -> dict[str, float] | None:
+            led: dict[str, str] | None = None, ruled: bool = False) -> dict[str, float] | None:
     """``compose.choose_levels`` where a family may offer smaller steps when its whole one does not
     fit (``LeverFamily.steps``): the largest common size factor that fits (or ``start``), then the
     families in ``order`` each grown by the first of its steps that still fits, round after round.
     ``led``: a family grown takes another along at least to its scale ({"scheme": "groups"}: the
-    groups never at a smaller scale than the scheme, ``_one_sheet``)."""
+    groups never at a smaller scale than the scheme, ``_one_sheet``). ``ruled`` (one sheet): an
+    auxiliary drawing grown past its target only as ``aux_allowed`` lets it — held back, not given
+    up, while the main drawings grow (a later round may let it on)."""
     from graphplan.sheets.compose import FACTORS
     mu = start if start is not None and fits(start) else \
         next((trial for trial in ({name: fam.start(k) for name, fam in families.items()} for k in FACTORS)
@@ -788,22 +790,29 @@ def _levels(families: dict[str, Family], fits, order, largest=None, start=None,
     if mu is None:
         return None
     growing = [name for name in order if name in families]
-    while growing:
+    changed = True
+    while growing and changed:
+        changed = False
         for name in list(growing):
             fam = families[name]
             steps = fam.steps(mu[name]) if isinstance(fam, LeverFamily) else [fam.finer(mu[name])]
+            held = False
             for bigger in steps:
                 if bigger is None or (largest is not None and not largest(name, bigger)):
+                    continue
+                if ruled and not aux_allowed(families, mu, name, bigger):
+                    held = True
                     continue
                 trial = {**mu, name: bigger}
                 other = (led or {}).get(name)
                 if other in trial and trial[other] > bigger * (1 + 1e-9):
                     trial[other] = bigger
                 if fits(trial):
-                    mu = trial
+                    mu, changed = trial, True
                     break
             else:
-                growing.remove(name)
+                if not held:
+                    growing.remove(name)
     return mu
 
 
@@ -818,13 +827,49 @@ def _next_coarser(fam: Family, mu: float) -> float:
     return coarser(mu)
 
 
+# the drawings the force analysis is read from (the scheme, the groups, their force plans, the lever)
+# and those that serve it (the acceleration plan the inertia loads are read off, the charts): on one
+# sheet an auxiliary drawing grows past its target by the one step that takes it there, further only
+# while it stays within ``AUX_OVER`` times the poorest main drawing's size against its target — the
+# room goes to the poorest first (LINK61: its acceleration plan at 2.3 times its 120 mm, p a = 276 mm,
+# the sheet's largest drawing, beside its scheme and groups at 1:10, a quarter of their target). So
+# where one is drawn past that one step, the poorest main drawing is at least 1/``AUX_OVER`` of its
+# size against its target. (The hodographs, auxiliary too, keep their own bounds: at most
+# ``HODOGRAPHS_CAP`` in the rounds, grown last, into the room no other drawing takes, up to
+# ``HODOGRAPHS_ROOM`` times that — ``_grown_hodographs``.)
+MAIN_DRAWINGS = ("scheme", "groups", "forces", "lever")
+AUXILIARY = ("acceleration", "charts")
+AUX_OVER = 2.0
+
+
+def poorest(families: dict[str, Family], mu: dict[str, float]) -> float:
+    """The smallest of the main drawings' sizes against their targets at ``mu`` (a group or a
+    force plan at its own scale counted too)."""
+    rel = [families[n].rel(mu[n]) for n in MAIN_DRAWINGS if n in families and n in mu]
+    rel += [families["groups"].rel(m) for _, m in group_scales(mu) if "groups" in families]
+    rel += [families["forces"].rel(m) for _, m in plan_scales(mu) if "forces" in families]
+    return min(rel + [math.inf])
+
+
+def aux_allowed(families: dict[str, Family], mu: dict[str, float], name: str, bigger: float) -> bool:
+    """Whether family ``name`` may be drawn at ``bigger`` (from ``mu[name]``) on one sheet: a main
+    drawing always; an auxiliary one while it is under its target (the step may take it past: the
+    shaper's acceleration plan at 0.72 or 1.45 of its target, no step between), past it up to
+    ``AUX_OVER`` times the poorest main drawing's size against its target (``poorest``)."""
+    if name not in AUXILIARY:
+        return True
+    fam = families[name]
+    return fam.rel(mu[name]) < 1.0 - 1e-9 or fam.rel(bigger) <= max(1.0, AUX_OVER * poorest(families, mu)) + 1e-9
+
+
 def _scheme_first(families: dict[str, Family], fits, mu: dict[str, float] | None) -> dict[str, float] | None:
     """The scheme and the groups (at one scale) grown a step at a time from ``mu`` while the sheet
     holds them, each step paid for by the acceleration plan or the lever, whichever is drawn larger
     against its target (a step coarser; the force plans', charts' and hodographs' sizes kept: the
     force plans' lettering is modelled no narrower at a coarser μF, ``Crowded``) while that drawing stays larger against its
     target than the smallest main drawing was before the step — the room taken from the richest for the poorest; then every
-    family grown in turn (``_levels``). None where the scheme cannot grow so."""
+    family grown in turn (``_levels``, the auxiliary drawings as ``aux_allowed`` lets them). None where
+    the scheme cannot grow so."""
     if mu is None:
         return None
     s = max(mu["scheme"], mu["groups"])
@@ -847,7 +892,7 @@ def _scheme_first(families: dict[str, Family], fits, mu: dict[str, float] | None
         cur, grew = trial, True
     if not grew:
         return None
-    return _levels(families, fits, ORDERS[1], start=cur, led={"scheme": "groups"})
+    return _levels(families, fits, ORDERS[1], start=cur, led={"scheme": "groups"}, ruled=True)
 
 
 @dataclass
@@ -982,11 +1027,16 @@ CHARTS_WRAP = 2     # the charts two to a row where in one row no one-sheet comp
 
 def _one_sheet(nat: Natural, f: Form) -> tuple[tuple, Plan] | None:
     """The best one-sheet composition (``_one_sheet_at``): the charts in one row, else — where none
-    fits so and the sheet has more charts than ``CHARTS_WRAP`` — wrapped ``CHARTS_WRAP`` to a row (A1
-    is one sheet: INCLINED_ROCKER53's three charts in a row beside its tables ran 6 mm over the field)."""
+    fits so, or where a main drawing is left under its target so, and the sheet has more charts than
+    ``CHARTS_WRAP`` — wrapped ``CHARTS_WRAP`` to a row where that scores better (A1 is one sheet:
+    INCLINED_ROCKER53's three charts in a row beside its tables ran 6 mm over the field; LINK61's
+    charts' row, three charts and six hodographs beside the tables' column, ran 10 mm over the field
+    at 1:5 and left its scheme and groups at 1:10, a quarter of their target)."""
     best = _one_sheet_at(nat, f)
-    if best is None and len(nat.families["charts"].sizes) > CHARTS_WRAP:
-        best = _one_sheet_at(nat, f, CHARTS_WRAP)
+    if len(nat.families["charts"].sizes) > CHARTS_WRAP and (best is None or best[0][0] < 1.0 - 1e-9):
+        wrapped = _one_sheet_at(nat, f, CHARTS_WRAP)
+        if best is None or (wrapped is not None and wrapped[0] > best[0]):
+            best = wrapped
     return best
 
 
@@ -1055,9 +1105,9 @@ def _one_sheet_at(nat: Natural, f: Form, wrap: int = 0) -> tuple[tuple, Plan] | 
                 # the top row's room, and its scheme and groups stayed at 1:10 beside ~180 × 85 mm
                 # blank where its A2 set draws them at 1:2 (review 55 #1); the score below keeps
                 # whichever composition leaves its smallest drawing the larger
-                mu = _levels(nat.families, fits, ORDERS[1])
+                mu = _levels(nat.families, fits, ORDERS[1], ruled=True)
             else:
-                mu = _levels(nat.families, fits, order)
+                mu = _levels(nat.families, fits, order, ruled=True)
             if mu is None:
                 continue
             if mu["scheme"] < mu["groups"] * (1 - 1e-9):
@@ -1066,7 +1116,7 @@ def _one_sheet_at(nat: Natural, f: Form, wrap: int = 0) -> tuple[tuple, Plan] | 
                 # scheme once its lever's couple took their row's room; the shaper's at 1:4 beside
                 # 1:2.5): the scheme at the groups' scale, the room it leaves grown into by the rest
                 mu = _levels(nat.families, fits, order, start={**mu, "scheme": mu["groups"]},
-                             led={"scheme": "groups"})
+                             led={"scheme": "groups"}, ruled=True)
                 if mu is None:
                     continue
             if order is SCHEME_FIRST:
@@ -1657,8 +1707,9 @@ def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
         def key_of(fam: str, i: int) -> str:
             return {"groups": GROUP + labels[i], "forces": PLAN + labels[i]}.get(fam, fam)
 
-        growing = list(steps)
-        while growing:
+        growing, changed = list(steps), True
+        while growing and changed:
+            changed = False
             # the smallest against its target first (kinlayout.into_room)
             for fam, i in sorted(growing, key=lambda s: fams[s[0]].rel(mu.get(key_of(*s), mu[s[0]]))):
                 key = key_of(fam, i)
@@ -1675,6 +1726,8 @@ def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
                             and (one or not _scheme_aside(nat, f, nxt, dr.scheme_size(mu, nxt, fams["scheme"].caption)))):
                     growing.remove((fam, i))
                     continue
+                if one and not aux_allowed(fams, mu, fam, nxt):
+                    continue        # held while the main drawings grow (``aux_allowed``)
                 trial_mu = {**mu, key: nxt}
                 trial = {k: list(v) for k, v in leaves.items()}
                 if fam == "hodographs":            # as drawn, each in the largest one's cell
@@ -1694,7 +1747,7 @@ def _filled_sheets(dr: ForceDrafter, nat: Natural, f: Form, p: Plan) -> Plan:
                                                                else (w + GROW_MARGIN, h + GROW_MARGIN)))
                 # the notes may take a line (the groups' μl apart from the scheme's): then fitted again
                 if _fits(nat, f, p, trial) and (_lettering_kept(dr, nat, trial_mu, p) or _fits(nat, f, p, trial)):
-                    mu, leaves = trial_mu, trial
+                    mu, leaves, changed = trial_mu, trial, True
                 else:
                     growing.remove((fam, i))
     return replace(p, mu=mu) if mu != p.mu else p
