@@ -1013,15 +1013,16 @@ SPEED_TALLEST = 220.0         # … nor than this (mm; 160 left ~55 mm over the 
 PSI_DECIMALS = 2     # ψ_max and ψ_min to one count of decimals (the shaper's "59,06°" beside "57°")
 
 
-def speed_fitted(f: Flywheel, lang: str, w: float, h: float, aspect: float = SPEED_ASPECT) -> Record:
+def speed_fitted(f: Flywheel, lang: str, w: float, h: float, aspect: float = SPEED_ASPECT,
+                 tallest: float = SPEED_TALLEST) -> Record:
     """ω(φ) drawn as large as a zone of w × h mm holds (its lettering included): ω has no standard
     scale — its ticks are read off the ordinate axis —, so the plot takes the zone, no taller than
-    ``aspect`` (``SPEED_ASPECT``) of its abscissa or ``SPEED_TALLEST``; never below ``SPEED_MIN``."""
+    ``aspect`` (``SPEED_ASPECT``) of its abscissa or ``tallest`` (``SPEED_TALLEST``); never below ``SPEED_MIN``."""
     pw, ph = SPEED_MIN
     probe = speed_record(f, lang, width=pw, height=ph)
     x0, y0, x1, y1 = probe.bounds()
     pw = max(SPEED_MIN[0], w - (x1 - x0 - pw))            # the lettering's overhang is fixed …
-    ph = max(SPEED_MIN[1], min(h - (y1 - y0 - SPEED_MIN[1]), aspect * pw, SPEED_TALLEST))
+    ph = max(SPEED_MIN[1], min(h - (y1 - y0 - SPEED_MIN[1]), aspect * pw, tallest))
     rec = speed_record(f, lang, width=pw, height=ph)
     # … but for the labels of the extremes, placed clear of the curves at the probe's size and not at
     # this one (stop 49: the motor's ω_max lettered left of the axis on the small probe cost ω(φ) 25 mm

@@ -11,7 +11,7 @@ import numpy as np
 
 from graphplan.drawing.flywheel import (BREAK_CLEAR, _cleared, achieved, energy_projected, inertia_turned, moments_least,
                                         turned_length,
-                                       moments_record, records, speed_fitted, wittenbauer_record, SPEED_ASPECT,
+                                       moments_record, records, speed_fitted, wittenbauer_record, SPEED_ASPECT, SPEED_TALLEST,
                                        PSI_DECIMALS)
 from graphplan.drawing.layout import (GAP, Leaf, Placed, Row, Stack, arrange, centred, column_size, extent, flow,
                                       set_columns, split, top_left)
@@ -671,13 +671,14 @@ def _drawn(dyn, args, L: float, size: float, lang: str, f: Flywheel | None = Non
     return f, {name: captioned(drawn[name], WORDS[lang][name]) for name in DRAWINGS}
 
 
-def _speed(f: Flywheel, lang: str, zone: tuple[float, float], aspect: float = SPEED_ASPECT) -> Record:
+def _speed(f: Flywheel, lang: str, zone: tuple[float, float], aspect: float = SPEED_ASPECT,
+           tallest: float = SPEED_TALLEST) -> Record:
     """ω(φ) captioned, as large as ``zone`` (w, h mm, the caption included) holds, no taller than
-    ``aspect`` of its abscissa (``speed_fitted``)."""
+    ``aspect`` of its abscissa nor ``tallest`` (``speed_fitted``)."""
     w, h = zone
     probe = speed_fitted(f, lang, w, 0.0)
     h -= _wh(captioned(probe, WORDS[lang]["speed"]))[1] - _wh(probe)[1]   # the caption's height comes off
-    return captioned(speed_fitted(f, lang, w, h, aspect), WORDS[lang]["speed"])
+    return captioned(speed_fitted(f, lang, w, h, aspect, tallest), WORDS[lang]["speed"])
 
 
 def speed_zone(shape: str, d: dict[str, Leaf], C: Leaf, W: float, H: float) -> tuple[float, float]:
@@ -1780,6 +1781,45 @@ def _speed_nooked(fw: Flywheel, lang: str, boxes: dict[str, tuple], band_box: tu
     return [Placed("speed", centred(rec, sb), sb), Placed("notes", top_left(nrec, nb), nb)]
 
 
+def _results_nooked(f: Form, fw: Flywheel, per: dict[str, tuple], parts: int, region: tuple,
+                    foot: float) -> bool:
+    """The results' tables (Table 2, Table 3) go side by side under the notes in the band's nook (the
+    "speed" composition, the notes in the nook) where every language's nook holds them there (the
+    notes' own width, ``GAP`` between; down to the field's foot, the nook ending left of the title
+    block) — the tables' column then holds Table 1 alone and ω(φ) over it grows into the height they
+    leave, as tall as its abscissa (``NOOK_ASPECT``): under the notes stood ~320 × 115 mm of bare
+    paper (LINK61), the column ω(φ) stands over being as tall as the field. Only where the height ω(φ)
+    does not grow into (its abscissa bounds it) is less than what the notes alone leave bare in the
+    nook (else the hole only moves to the column). ``per``: each language's (leaves, tables, the
+    notes' lines, the band's boxes)."""
+    W, H = region[2] - region[0], region[3] - region[1]
+    for lang, (leaves, tables, lines, boxes) in per.items():
+        if len(tables) < 3:
+            return False
+        C = _column(f, tables, parts, None, "speed")[0]
+        band_box = next(b for leaf, b in arrange(_tree("speed", leaves, C, foot - region[1]), region)
+                        if leaf.name == "band")
+        slack = (band_box[2] - band_box[0] - _band_size(boxes)[0]) / 2
+        got = nook_for(boxes, lines, slack)
+        if got is None:
+            return False
+        (_, n0, n1, n3), nw = got
+        dy = _band_shift(boxes, band_box)[1]
+        if n1 + _band_shift(boxes, band_box)[0] > keep_out(f)[0] - 1e-9:
+            return False
+        n0 = min(n0, region[1] - dy)               # the paper under the band's foot is no one's
+        tw, th = _tables_size([[t] for t in tables[1:]], 2)
+        nh = _wh(note_block(lines, nw))[1]
+        if tw > nw + 1e-9 or nh + GAP + th > n3 - n0 + 1e-9:
+            return False
+        before = _wh(_speed(fw, lang, speed_zone("speed", leaves, C, W, H)))[1]
+        C1 = _column(f, tables[:1], 1, None, "speed")[0]
+        after = _wh(_speed(fw, lang, speed_zone("speed", leaves, C1, W, H), NOOK_ASPECT, math.inf))[1]
+        if th - (after - before) > n3 - n0 - nh - 1e-9:     # the column's bare height past the nook's
+            return False
+    return True
+
+
 def count_dynamics_sheets(st: Study, f: Form, args: Options) -> int:
     """``len(build_dynamics_sheet(st, f, args).pages)`` without drawing it where ``construction``
     chose one sheet's composition (that builder then lays ``pages = [items]``): what the scene's
@@ -1842,29 +1882,39 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
         return [Placed(leaf.name, rec, b)]
     height = (None if in_nook or shape == "nook"                  # the notes in the column
               else (lambda w: _wh(note_block(note_lines, w))[1]))
+    nooked: list[Leaf] = []                  # the results' tables under the notes in the band's nook
     if shape != "set":                       # ΔT(φ) across the band's box where I*(φ)'s height bounds the band
         zones = []                           # each language's drawings and column: the same band in either
+        per = {}                             # … its leaves, tables and notes (``_results_nooked``)
         for other in LANGS:
             if other == lang:
                 zones.append((leaves, _column(f, tables, parts, height, shape)[0]))
+                per[other] = (leaves, tables, note_lines)
                 continue
             _, drawn_ = _drawn(dyn, args, L, size, other, fw)
             doc_ = dynamics_json(fw)
             lines_ = lines_of(notes(fw, doc_, other, short))
+            tables_ = [Leaf(n, record=r) for n, r in _tables(doc_, other, factor, fw)]
             zones.append(({"moments": Leaf("moments", record=drawn_["moments"]),
                            "speed": Leaf("speed", record=drawn_["speed"]), "band": leaves["band"]},
-                          _column(f, [Leaf(n, record=r) for n, r in _tables(doc_, other, factor, fw)], parts,
-                                  None if in_nook or shape == "nook"
+                          _column(f, tables_, parts, None if in_nook or shape == "nook"
                                   else (lambda w, ls=lines_: _wh(note_block(ls, w))[1]), shape)[0]))
+            per[other] = (zones[-1][0], tables_, lines_)
         got = widened(fw, length, zones, shape, foot - region[1], region)
+        others = {other: band(fw, other, length)[1] for other in LANGS}
         if got is not None and (not in_nook or nook_for(got[1][lang][1], note_lines) is not None
                                 or nook_for(boxes, note_lines) is None):     # the notes' nook kept
             parts_, boxes = got[1][lang]
             leaves["band"] = Leaf("band", got[2].w, got[2].h, record=_union(parts_))
+            others = {other: got[1][other][1] for other in LANGS}
+        if shape == "speed" and in_nook and _results_nooked(
+                f, fw, {o: ({**per[o][0], "band": leaves["band"]}, per[o][1], per[o][2], others[o]) for o in LANGS},
+                parts, region, foot):
+            nooked, tables, parts = tables[1:], tables[:1], 1
     if shape not in ("set", "nook"):         # ω(φ) grows into the room the other zones leave it
         C = _column(f, tables, parts, height, shape)[0]
         zone = speed_zone(shape, leaves, C, region[2] - region[0], region[3] - region[1])
-        speed = _speed(fw, lang, zone)
+        speed = _speed(fw, lang, zone, NOOK_ASPECT, math.inf) if nooked else _speed(fw, lang, zone)
         if _wh(speed)[0] <= zone[0] + 1e-6 and _wh(speed)[1] <= zone[1] + 1e-6:
             leaves["speed"] = Leaf("speed", record=speed)
     if shape == "set":
@@ -1910,9 +1960,15 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
             if got is None:                          # (``construction`` found it holds them) the lowest
                 got = (nooks(boxes)[-1], nooks(boxes)[-1][2] - nooks(boxes)[-1][0] + max(slack, 0.0))
             (_, n0, n1, n3), nw = got
-            note_lines = with_motor(note_lines, lines_of(notes(fw, doc, lang, short, motor=True)), n3 - n0, nw)
+            under = 0.0
+            if nooked:                                 # the results' tables under the notes, the nook run
+                n0 = min(n0, region[1] - dy)           # down to the field's foot (``_results_nooked``)
+                under = _tables_size([[t] for t in nooked], 2)[1] + GAP
+            note_lines = with_motor(note_lines, lines_of(notes(fw, doc, lang, short, motor=True)), n3 - n0 - under, nw)
             nrec = note_block(note_lines, nw)          # from the left side of the band's box
             nb = (n1 + dx - nw, n3 + dy - _wh(nrec)[1], n1 + dx, n3 + dy)
+            if nooked:                                 # side by side under the notes, from the nook's left
+                items += set_columns([[t] for t in nooked], nb[0], nb[1] - GAP)
         else:
             nrec = note_block(note_lines, width)
             bottom = col_box[1] if shape in NOOKED else foot      # over the title block, or the column's foot
