@@ -5,6 +5,13 @@
    results' tables (Table 2, Table 3) go there under the notes and ω(φ) over Table 1 grows into the
    height they leave. Measured on the drawn sheet: the largest blank rectangle (off every drawing's,
    table's and note's ink and the title block, both sides ≥ 50 mm) against the drawings' own boxes.
+5. LINK61 (the lead's: a crank-rocker four-bar O1ABO2 whose bell-crank rocker O2BD — D at [−0.06, −0.11] m in
+   O2B's own frame — drives a slider E on the vertical guide x = 0.44 m through the rod DE; the crank clockwise
+   at 120 rpm; 900 N against E over its working (slow) stroke; q = 20 kg/m, I_S = 0.1·m·l², the slider 6 kg;
+   δ = 0.05, η = 0.85, a 1000-rpm motor). The truth is this file's own: closed-form positions (B on the circles
+   about A and O2, D fixed in O2B's frame, E where the circle about D meets the guide), velocities by five-point
+   differences, I* by the kinetic energy, M*_c by the power of the weights and the force, A_c by the trapezoid
+   split at E's extreme, J by the energy method, the motor's steady state by the midpoint rule.
 """
 from __future__ import annotations
 
@@ -12,12 +19,15 @@ import math
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
+from scipy.optimize import minimize_scalar
 
 from conftest import scene_study
 
 sys.path.insert(0, str(Path(__file__).parent))
 from review_scenes import LINK61  # noqa: E402
+from test_dynamics_dyn59 import energy_flywheel  # noqa: E402  (the energy method, written once)
 
 
 def _largest_blank(field, ink, cell: float = 5.0, least: float = 50.0) -> tuple[float, tuple]:
@@ -84,3 +94,136 @@ def test_link61s_results_tables_fill_the_nook_under_the_notes(link61_sheets, lan
     assert t1[3] > t2[3] and t1[0] > inertia[2]             # Table 1 at the right, read first
     speed = at["speed"]
     assert speed[1] > t1[3]                                   # ω(φ) over Table 1
+
+
+# -- 5. LINK61 by its own closed form and the energy method --------------------------------------------------
+R, L2, L3, L4, X_GUIDE = 0.07, 0.26, 0.16, 0.22, 0.44
+O2, D_IN_O2B = 0.28 + 0.0j, -0.06 - 0.11j          # D in O2B's frame: 0.06 m back along O2→B, 0.11 m to its right
+Q, K, G = 20.0, 0.1, 9.81
+M1, M2, M3, M4, M5 = Q * R, Q * L2, Q * L3, Q * L4, 6.0
+I1, I2, I3, I4 = K * M1 * R * R, K * M2 * L2 * L2, K * M3 * L3 * L3, K * M4 * L4 * L4
+FORCE, W1, DELTA, ETA = 900.0, 120 * math.pi / 30, 0.05, 0.85
+
+
+def _geometry(th: np.ndarray) -> dict[str, np.ndarray]:
+    """Points (complex, m) and angles at the crank's angles ``th`` from the x axis: B to the left of A→O2,
+    E above D (the scene's assembly: the other one gives another I*, 15 % apart)."""
+    A = R * np.exp(1j * th)
+    d = O2 - A
+    dist = np.abs(d)
+    a = (L2 * L2 - L3 * L3 + dist * dist) / (2 * dist)
+    B = A + d / dist * (a + 1j * np.sqrt(L2 * L2 - a * a))
+    D = O2 + (B - O2) / L3 * D_IN_O2B
+    E = X_GUIDE + 1j * (D.imag + np.sqrt(L4 * L4 - (X_GUIDE - D.real) ** 2))
+    return {"E": E, "S2": (A + B) / 2, "S3": O2 + 0.4 * (B - O2), "S4": (D + E) / 2,
+            "psi2": np.unwrap(np.angle(B - A)), "psi3": np.unwrap(np.angle(B - O2)), "psi4": np.unwrap(np.angle(E - D))}
+
+
+def _rates(th: np.ndarray, h: float = 1e-4) -> dict[str, np.ndarray]:
+    g = [_geometry(th + k * h) for k in (-2, -1, 1, 2)]
+    return {key: (g[0][key] - 8 * g[1][key] + 8 * g[2][key] - g[3][key]) / (12 * h) for key in g[0]}
+
+
+def _reduced(turn: np.ndarray, th0: float, working: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """I*_m and M*_c (resisting +) at crank turns ``turn`` clockwise from position 0 (crank angle ``th0``);
+    the 900 N against E's velocity where ``working``."""
+    v = {key: -x for key, x in _rates(th0 - turn).items()}      # clockwise: dθ/dt = −ω1
+    inertia = (I1 + M2 * abs(v["S2"]) ** 2 + I2 * v["psi2"] ** 2 + M3 * abs(v["S3"]) ** 2 + I3 * v["psi3"] ** 2
+               + M4 * abs(v["S4"]) ** 2 + I4 * v["psi4"] ** 2 + M5 * abs(v["E"]) ** 2)
+    gravity = -G * (M2 * v["S2"].imag + M3 * v["S3"].imag + M4 * v["S4"].imag + M5 * v["E"].imag)
+    return inertia, -(gravity + np.where(working, -FORCE * np.abs(v["E"]), 0.0))
+
+
+@pytest.fixture(scope="module")
+def link61():
+    from graphplan.exact.dynamics import analyse
+    return analyse(scene_study(LINK61), None)
+
+
+@pytest.fixture(scope="module")
+def truth61():
+    """Position 0 (the crank's angle where E's slow stroke begins), the working stroke's turn (rad) and E's
+    stroke H (m)."""
+    height = lambda t: float(_geometry(np.array([t]))["E"][0].imag)   # noqa: E731
+    th = np.linspace(0.0, 2 * math.pi, 7201)
+    y = _geometry(th)["E"].imag
+    ends = []
+    for sign, k in ((-1.0, int(np.argmax(y))), (1.0, int(np.argmin(y)))):
+        got = minimize_scalar(lambda t: sign * height(t), bounds=(th[k] - 0.002, th[k] + 0.002), method="bounded",
+                              options={"xatol": 1e-11})
+        ends.append(float(got.x))
+    down = (ends[0] - ends[1]) % (2 * math.pi)            # clockwise from E's top to its bottom
+    th0, working = (ends[0], down) if down > math.pi else (ends[1], 2 * math.pi - down)
+    return th0, working, height(ends[0]) - height(ends[1])
+
+
+def test_link61_position_0_starts_the_sliders_slow_stroke(link61, truth61):
+    """Position 0 "working": the crank at 213.33° (E at its top), the slow stroke down 184.37° of the clockwise
+    turn; E's stroke 112.53 mm."""
+    from graphplan.exact.positions import crank_angle
+    th0, working, stroke = truth61
+    assert math.degrees(working) == pytest.approx(184.374, abs=0.01)
+    assert stroke * 1000 == pytest.approx(112.532, abs=0.01)
+    assert float(crank_angle(link61.study, 0.0)) % 360 == pytest.approx(math.degrees(th0) % 360, abs=1e-3)
+
+
+def test_link61_reduced_inertia_and_moment_at_the_twelve_positions(link61, truth61):
+    """I*_m and M*_c at positions 0 … 11 against the closed form (the force on positions 0 … 6, E going down)."""
+    from graphplan.exact.dynamics import reduce
+    th0, working, _ = truth61
+    turn = 2 * math.pi * np.arange(12) / 12
+    inertia, moment = _reduced(turn, th0, turn < working)
+    got = reduce(link61.study, turn)
+    assert got.inertia == pytest.approx(inertia, rel=1e-6)
+    assert got.moment == pytest.approx(moment, rel=1e-6, abs=1e-5)
+    assert float(moment[3]) == pytest.approx(45.13, abs=0.01)             # the sheet's Table 1: 45,13 N·m
+
+
+def test_link61_work_flywheel_and_motor_by_the_energy_method(link61, truth61):
+    """A_c = 900 N × H (the weights give none over a cycle) = 101.279 J; J = I_rotor·i² + I_fl that keeps
+    δ = 0.05 about ω_m = 12.566 rad/s (the energy method on a 1/20° grid): 6.0903 kg·m², I_fl 5.9097; the
+    1000-rpm line's 4АМ80А6 (0.75 kW, 916 rpm) for P = max M*_c·ω1/η = 0.680 kW (4АМ71В6's 0.55 kW short); and
+    with that motor's line and the program's motor flywheel the steady state swings by δ."""
+    th0, working, stroke = truth61
+    n = 360 * 20
+    turn = np.sort(np.append(np.linspace(0.0, 2 * math.pi, n + 1), [working, working]))
+    mask = turn < working
+    k = int(np.searchsorted(turn, working, side="left"))
+    mask[k], mask[k + 1] = True, False                     # the extreme twice: the force on, then off
+    inertia, moment = _reduced(turn, th0, mask)
+    work = np.concatenate([[0.0], np.cumsum(np.diff(turn) * (moment[1:] + moment[:-1]) / 2)])
+    assert work[-1] == pytest.approx(FORCE * stroke, rel=1e-5)
+    assert link61.cycle.work == pytest.approx(work[-1], rel=1e-5)
+    drive = work[-1] / (2 * math.pi)
+    assert link61.cycle.driving == pytest.approx(drive, rel=1e-5)
+    J = energy_flywheel(drive * turn - work, inertia, W1, DELTA, (0.5, 1e3), 1e6)
+    assert link61.flywheel + link61.constant == pytest.approx(J, rel=1e-4)
+    assert J == pytest.approx(6.0903, abs=1e-3)
+    m = link61.drive.motor
+    assert (m.name, m.rpm_sync, m.power_kW, m.rpm_rated) == ("4АМ80А6", 1000, 0.75, 916)
+    need = float(np.max(moment)) * W1 / ETA / 1000
+    assert need == pytest.approx(0.67958, abs=2e-5) and 0.55 < need < 0.75
+    i = 916 / 120
+    assert link61.constant == pytest.approx(0.0031 * i * i, rel=1e-6)
+    ws, wn = 1000 * math.pi / 30, 916 * math.pi / 30
+    a = 750.0 / wn / (wn - ws)
+    b = -a * ws
+    grid = turn[::4]
+    Ig, Mg = np.interp(grid, turn, inertia), np.interp(grid, turn, moment)
+    Jm = link61.constant + link61.motor_flywheel
+    T = 0.5 * (Ig[0] + Jm) * W1 ** 2
+    for _ in range(100):
+        T_start, speeds = T, []
+        for j in range(len(grid) - 1):
+            h = grid[j + 1] - grid[j]
+            w = math.sqrt(2 * T / (Ig[j] + Jm))
+            speeds.append(w)
+            half = T + 0.5 * h * (i * ETA * (a * i * w + b) - Mg[j])
+            wh = math.sqrt(2 * half / ((Ig[j] + Ig[j + 1]) / 2 + Jm))
+            T += h * (i * ETA * (a * i * wh + b) - (Mg[j] + Mg[j + 1]) / 2)
+        if abs(T - T_start) < 1e-10 * T:
+            break
+    speeds = np.array(speeds)
+    mean = (speeds.max() + speeds.min()) / 2
+    assert (speeds.max() - speeds.min()) / mean == pytest.approx(DELTA, rel=2e-3)
+    assert mean == pytest.approx(13.31, abs=5e-3)          # the sheet's ω_m,дв 13,31 rad/s
