@@ -9284,3 +9284,71 @@ magnitude = 700
 stroke = "working"
 direction = "oppose"
 '''
+
+
+# dyn61's own (stop 61): a crank-rocker four-bar of lever shears (a textbook flywheel case): the rocker O2B carries
+# the upper knife; a 420 N·m cutting moment over a short part of its working swing only (a profile), so the crank's
+# resistance is a narrow peak; masses by length; a 1500-rpm motor, δ = 1/12.
+DYN61_SHEARS = '''
+title = "Шарнірний чотириланковий механізм важільних ножиць"
+title_en = "Crank-rocker four-bar of lever shears"
+designation = "ТММ.КП.61.610"
+
+[sheet]
+student = "Студент С. С."
+teacher = "Викладач В. В."
+group = "МБ-61"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.30, 0.06]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 80
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.28
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.16
+points = { S3 = 0.5 }
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 90
+
+[loads]
+g = 9.81
+mass_per_length = 40
+inertia_factor = 0.1
+
+[[moment]]
+link = 3
+magnitude = 420
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0], [8, 0], [12, 1], [22, 1], [26, 0], [60, 0]]
+
+[dynamics]
+delta = 0.0833
+efficiency = 0.85
+synchronous_rpm = 1500
+'''

@@ -724,6 +724,10 @@ def _graduate(rec: Record, hi: float, mu: float, lang: str, foot: float) -> None
 _WITT: dict = {}
 
 
+TANGENT_PAST = 20.0      # mm: a tangent drawn past its touch point at most this far along it (15 mm across as
+#                          before where that is shorter: tangents under 41° as they were)
+
+
 def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, float] | None = None) -> Record:
     """``energy_mass`` once per flywheel, language, projections and sketching (a copy each time): a
     sheet's composition asks for the same diagram many times, and its numbers' leaders are the
@@ -787,9 +791,12 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
             numbers.append(asked)
     for name, s, b, tx, ty in (("max", tg["s_max"], k, tg["touch_max_x"], tg["touch_max_y"]),
                                ("min", tg["s_min"], l, tg["touch_min_x"], tg["touch_min_y"])):
-        x_end = tx + 15.0
-        if projections is not None and b + s * x_end < float(np.max(f.dT)) + 4.0:    # among the projections:
-            x_end = max(x_end, x_hi + 4.0)                                         # its ψ right of them
+        # past the touch point 15 mm across, no more than TANGENT_PAST along the line: a steep tangent
+        # (the frame saw's 78°) ran 74 mm up past the curve to its ψ, over bare paper
+        x_end = tx + min(15.0, TANGENT_PAST / math.hypot(1.0, s))
+        top = float(np.max(f.dT)) + 4.0
+        if projections is not None and b + s * x_end < top:       # among the projections: its ψ right of
+            x_end = max(x_end, min(x_hi + 4.0, (top - b) / s if s > 0 else math.inf))   # them or over them
         rec.segment((0.0, b), (x_end, b + s * x_end), role="result", layer=LAYER, step=f"tangent at ψ_{name}")
         rec.point((tx, ty), role="joint", layer=LAYER, step=f"tangent at ψ_{name} touches")
         psi = math.degrees(math.atan(s))
@@ -1013,15 +1020,16 @@ SPEED_TALLEST = 220.0         # … nor than this (mm; 160 left ~55 mm over the 
 PSI_DECIMALS = 2     # ψ_max and ψ_min to one count of decimals (the shaper's "59,06°" beside "57°")
 
 
-def speed_fitted(f: Flywheel, lang: str, w: float, h: float, aspect: float = SPEED_ASPECT) -> Record:
+def speed_fitted(f: Flywheel, lang: str, w: float, h: float, aspect: float = SPEED_ASPECT,
+                 tallest: float = SPEED_TALLEST) -> Record:
     """ω(φ) drawn as large as a zone of w × h mm holds (its lettering included): ω has no standard
     scale — its ticks are read off the ordinate axis —, so the plot takes the zone, no taller than
-    ``aspect`` (``SPEED_ASPECT``) of its abscissa or ``SPEED_TALLEST``; never below ``SPEED_MIN``."""
+    ``aspect`` (``SPEED_ASPECT``) of its abscissa or ``tallest`` (``SPEED_TALLEST``); never below ``SPEED_MIN``."""
     pw, ph = SPEED_MIN
     probe = speed_record(f, lang, width=pw, height=ph)
     x0, y0, x1, y1 = probe.bounds()
     pw = max(SPEED_MIN[0], w - (x1 - x0 - pw))            # the lettering's overhang is fixed …
-    ph = max(SPEED_MIN[1], min(h - (y1 - y0 - SPEED_MIN[1]), aspect * pw, SPEED_TALLEST))
+    ph = max(SPEED_MIN[1], min(h - (y1 - y0 - SPEED_MIN[1]), aspect * pw, tallest))
     rec = speed_record(f, lang, width=pw, height=ph)
     # … but for the labels of the extremes, placed clear of the curves at the probe's size and not at
     # this one (stop 49: the motor's ω_max lettered left of the axis on the small probe cost ω(φ) 25 mm

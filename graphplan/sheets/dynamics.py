@@ -11,7 +11,7 @@ import numpy as np
 
 from graphplan.drawing.flywheel import (BREAK_CLEAR, _cleared, achieved, energy_projected, inertia_turned, moments_least,
                                         turned_length,
-                                       moments_record, records, speed_fitted, wittenbauer_record, SPEED_ASPECT,
+                                       moments_record, records, speed_fitted, wittenbauer_record, SPEED_ASPECT, SPEED_TALLEST,
                                        PSI_DECIMALS)
 from graphplan.drawing.layout import (GAP, Leaf, Placed, Row, Stack, arrange, centred, column_size, extent, flow,
                                       set_columns, split, top_left)
@@ -671,13 +671,14 @@ def _drawn(dyn, args, L: float, size: float, lang: str, f: Flywheel | None = Non
     return f, {name: captioned(drawn[name], WORDS[lang][name]) for name in DRAWINGS}
 
 
-def _speed(f: Flywheel, lang: str, zone: tuple[float, float], aspect: float = SPEED_ASPECT) -> Record:
+def _speed(f: Flywheel, lang: str, zone: tuple[float, float], aspect: float = SPEED_ASPECT,
+           tallest: float = SPEED_TALLEST) -> Record:
     """ω(φ) captioned, as large as ``zone`` (w, h mm, the caption included) holds, no taller than
-    ``aspect`` of its abscissa (``speed_fitted``)."""
+    ``aspect`` of its abscissa nor ``tallest`` (``speed_fitted``)."""
     w, h = zone
     probe = speed_fitted(f, lang, w, 0.0)
     h -= _wh(captioned(probe, WORDS[lang]["speed"]))[1] - _wh(probe)[1]   # the caption's height comes off
-    return captioned(speed_fitted(f, lang, w, h, aspect), WORDS[lang]["speed"])
+    return captioned(speed_fitted(f, lang, w, h, aspect, tallest), WORDS[lang]["speed"])
 
 
 def speed_zone(shape: str, d: dict[str, Leaf], C: Leaf, W: float, H: float) -> tuple[float, float]:
@@ -1177,17 +1178,45 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
 
     def kl(L: float, size: float) -> float:       # read off the construction: nothing drawn
         return abs(built(L, size).kl)
-    target = _a1_kl(st, dyn, f, args)
+    classical = _a1_kl(st, dyn, f, args)
+    # the search aims at the |kl| the A1 sheet draws (ΔT at its own finer μ_T, or its larger diagram:
+    # ``a1_drawn_kl``), the one the set's note compares with — stop 60's note said 113 mm where the
+    # search had aimed at LINK53's classical 74; the order of the work is left (the tables first) only
+    # where it does not read even the classical composition's |kl| (the slotter's A2 set aimed at the
+    # larger diagram had lost its order of the work for it)
+    target = None if classical is None else max(classical, a1_drawn_kl(st, dyn, args))
     # the moments on the first sheet (the set in the order of the work) where that reads the flywheel
     # no worse than the A1 sheet; else at the scales a later sheet holds (the tables then go first)
-    ordered = _set_scales(sizes, lambda L_, s_: fits(L_, s_, True), kl, target, (L, size))
-    if target is None or kl(*ordered) >= target - 1e-9:
+    first_fits = lambda L_, s_: fits(L_, s_, True)      # noqa: E731
+    ordered = _set_scales(sizes, first_fits, kl, target, (L, size))
+    if target is not None and classical - 1e-9 <= kl(*ordered) < target - 1e-9:
+        # in the order of the work the classical |kl| is read: the drawn one sought in that order alone
+        L, size, why = _reach(sizes, first_fits, kl, target, args.precision, f, ordered)
+        if why is not None:
+            if len(_SHORT) >= 64:
+                _SHORT.pop(next(iter(_SHORT)))
+            why = _too_tall(sizes, target, args.precision, f) or why
+            _SHORT[_construction_key(st, dyn, f, args)] = Shortfall(kl(L, size), target, f.name, *why,
+                                                                    drawn=target)
+    elif target is None or kl(*ordered) >= target - 1e-9:
         L, size = ordered
     else:
         L, size = _set_scales(sizes, fits, kl, target, (L, size))
         if kl(L, size) < target - 1e-9:      # the search's steps may pass a scale that reads it: any?
             L, size, why = _reach(sizes, fits, kl, target, args.precision, f, (L, size))
-            if why is not None and kl(*ordered) >= args.precision / ORDERED_READ - 1e-9:
+            out = why is not None
+            if out and target > classical + 1e-9:
+                # the drawn |kl| out of reach: the classical one where a later sheet reads it (the
+                # compressor's A3 set: 69.5 mm, tables first, rather than 51 in the order of the work)
+                Lc, sc = _set_scales(sizes, fits, kl, classical, (L, size))
+                if kl(Lc, sc) < classical - 1e-9:
+                    Lc, sc, gone = _reach(sizes, fits, kl, classical, args.precision, f, (Lc, sc))
+                    out = gone is not None
+                else:
+                    out = False
+                if kl(Lc, sc) > kl(L, size) + 1e-9:
+                    L, size = Lc, sc
+            if out and kl(*ordered) >= args.precision / ORDERED_READ - 1e-9:
                 # the A1 sheet's |kl| out of reach either way: the set in the order of the work (review 7
                 # #12: its first sheet the tables), the flywheel still read to ORDERED_READ by the ruler
                 (L, size), why = ordered, _reach(sizes, lambda L_, s_: fits(L_, s_, True), kl, target,
@@ -1233,7 +1262,9 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
     at = sheets(L, size)
     if at[0] > 0:
         first = fits(L, size, True)
-        floor = target if target is not None and kl(L, size) >= target - 1e-9 else args.precision / ORDERED_READ
+        floor = (target if target is not None and kl(L, size) >= target - 1e-9
+                 else classical if classical is not None and kl(L, size) >= classical - 1e-9   # as it reads
+                 else args.precision / ORDERED_READ)
         low = min(L_ for L_, _ in sizes)
         for step in range(1, SET_PATIENCE + 1):
             L_ = L - SET_L_STEP * step
@@ -1303,11 +1334,12 @@ def _a1_kl(st: Study, dyn, f: Form, args) -> float | None:
 def a1_drawn_kl(st: Study, dyn, args) -> float:
     """|kl| of the energy–mass diagram as the A1 sheet draws it: at its construction's scales and
     ΔT's own finer μ_T where it has one (``construction``, ``finer_energy``) — what a set's note
-    compares with (``short_note``). ``_a1_kl``, the set's search target, reads the classical
-    composition's scales (the slotter's A2 set aimed at the larger diagram lost its order of the
-    work); the A1 sheet draws ΔT finer since stop 59, or the larger diagram, and the note understated
-    its |kl| (LINK53's A3 set: 74 mm against the 113 drawn; the shaper's: 171.5 against 217.5). The
-    whole A1 search runs: only where a set is short."""
+    compares with (``short_note``) and since stop 61 what the set's search aims at (``_a1_kl``, the
+    classical composition's scales, only bounds where the set may leave the order of the work: the
+    slotter's A2 set aimed at the larger diagram lost its order). The A1 sheet draws ΔT finer since
+    stop 59, or the larger diagram, and the note understated its |kl| (LINK53's A3 set: 74 mm against
+    the 113 drawn; the shaper's: 171.5 against 217.5). The whole A1 search runs (remembered per
+    process)."""
     A1 = form("A1")
     c = construction(st, dyn, A1, args)
     return abs(_built(dyn, args, c[0], c[1], c[7]).kl)
@@ -1780,6 +1812,45 @@ def _speed_nooked(fw: Flywheel, lang: str, boxes: dict[str, tuple], band_box: tu
     return [Placed("speed", centred(rec, sb), sb), Placed("notes", top_left(nrec, nb), nb)]
 
 
+def _results_nooked(f: Form, fw: Flywheel, per: dict[str, tuple], parts: int, region: tuple,
+                    foot: float) -> bool:
+    """The results' tables (Table 2, Table 3) go side by side under the notes in the band's nook (the
+    "speed" composition, the notes in the nook) where every language's nook holds them there (the
+    notes' own width, ``GAP`` between; down to the field's foot, the nook ending left of the title
+    block) — the tables' column then holds Table 1 alone and ω(φ) over it grows into the height they
+    leave, as tall as its abscissa (``NOOK_ASPECT``): under the notes stood ~320 × 115 mm of bare
+    paper (LINK61), the column ω(φ) stands over being as tall as the field. Only where the height ω(φ)
+    does not grow into (its abscissa bounds it) is less than what the notes alone leave bare in the
+    nook (else the hole only moves to the column). ``per``: each language's (leaves, tables, the
+    notes' lines, the band's boxes)."""
+    W, H = region[2] - region[0], region[3] - region[1]
+    for lang, (leaves, tables, lines, boxes) in per.items():
+        if len(tables) < 3:
+            return False
+        C = _column(f, tables, parts, None, "speed")[0]
+        band_box = next(b for leaf, b in arrange(_tree("speed", leaves, C, foot - region[1]), region)
+                        if leaf.name == "band")
+        slack = (band_box[2] - band_box[0] - _band_size(boxes)[0]) / 2
+        got = nook_for(boxes, lines, slack)
+        if got is None:
+            return False
+        (_, n0, n1, n3), nw = got
+        dy = _band_shift(boxes, band_box)[1]
+        if n1 + _band_shift(boxes, band_box)[0] > keep_out(f)[0] - 1e-9:
+            return False
+        n0 = min(n0, region[1] - dy)               # the paper under the band's foot is no one's
+        tw, th = _tables_size([[t] for t in tables[1:]], 2)
+        nh = _wh(note_block(lines, nw))[1]
+        if tw > nw + 1e-9 or nh + GAP + th > n3 - n0 + 1e-9:
+            return False
+        before = _wh(_speed(fw, lang, speed_zone("speed", leaves, C, W, H)))[1]
+        C1 = _column(f, tables[:1], 1, None, "speed")[0]
+        after = _wh(_speed(fw, lang, speed_zone("speed", leaves, C1, W, H), NOOK_ASPECT, math.inf))[1]
+        if th - (after - before) > n3 - n0 - nh - 1e-9:     # the column's bare height past the nook's
+            return False
+    return True
+
+
 def count_dynamics_sheets(st: Study, f: Form, args: Options) -> int:
     """``len(build_dynamics_sheet(st, f, args).pages)`` without drawing it where ``construction``
     chose one sheet's composition (that builder then lays ``pages = [items]``): what the scene's
@@ -1842,29 +1913,39 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
         return [Placed(leaf.name, rec, b)]
     height = (None if in_nook or shape == "nook"                  # the notes in the column
               else (lambda w: _wh(note_block(note_lines, w))[1]))
+    nooked: list[Leaf] = []                  # the results' tables under the notes in the band's nook
     if shape != "set":                       # ΔT(φ) across the band's box where I*(φ)'s height bounds the band
         zones = []                           # each language's drawings and column: the same band in either
+        per = {}                             # … its leaves, tables and notes (``_results_nooked``)
         for other in LANGS:
             if other == lang:
                 zones.append((leaves, _column(f, tables, parts, height, shape)[0]))
+                per[other] = (leaves, tables, note_lines)
                 continue
             _, drawn_ = _drawn(dyn, args, L, size, other, fw)
             doc_ = dynamics_json(fw)
             lines_ = lines_of(notes(fw, doc_, other, short))
+            tables_ = [Leaf(n, record=r) for n, r in _tables(doc_, other, factor, fw)]
             zones.append(({"moments": Leaf("moments", record=drawn_["moments"]),
                            "speed": Leaf("speed", record=drawn_["speed"]), "band": leaves["band"]},
-                          _column(f, [Leaf(n, record=r) for n, r in _tables(doc_, other, factor, fw)], parts,
-                                  None if in_nook or shape == "nook"
+                          _column(f, tables_, parts, None if in_nook or shape == "nook"
                                   else (lambda w, ls=lines_: _wh(note_block(ls, w))[1]), shape)[0]))
+            per[other] = (zones[-1][0], tables_, lines_)
         got = widened(fw, length, zones, shape, foot - region[1], region)
+        others = {other: band(fw, other, length)[1] for other in LANGS}
         if got is not None and (not in_nook or nook_for(got[1][lang][1], note_lines) is not None
                                 or nook_for(boxes, note_lines) is None):     # the notes' nook kept
             parts_, boxes = got[1][lang]
             leaves["band"] = Leaf("band", got[2].w, got[2].h, record=_union(parts_))
+            others = {other: got[1][other][1] for other in LANGS}
+        if shape == "speed" and in_nook and _results_nooked(
+                f, fw, {o: ({**per[o][0], "band": leaves["band"]}, per[o][1], per[o][2], others[o]) for o in LANGS},
+                parts, region, foot):
+            nooked, tables, parts = tables[1:], tables[:1], 1
     if shape not in ("set", "nook"):         # ω(φ) grows into the room the other zones leave it
         C = _column(f, tables, parts, height, shape)[0]
         zone = speed_zone(shape, leaves, C, region[2] - region[0], region[3] - region[1])
-        speed = _speed(fw, lang, zone)
+        speed = _speed(fw, lang, zone, NOOK_ASPECT, math.inf) if nooked else _speed(fw, lang, zone)
         if _wh(speed)[0] <= zone[0] + 1e-6 and _wh(speed)[1] <= zone[1] + 1e-6:
             leaves["speed"] = Leaf("speed", record=speed)
     if shape == "set":
@@ -1910,9 +1991,15 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
             if got is None:                          # (``construction`` found it holds them) the lowest
                 got = (nooks(boxes)[-1], nooks(boxes)[-1][2] - nooks(boxes)[-1][0] + max(slack, 0.0))
             (_, n0, n1, n3), nw = got
-            note_lines = with_motor(note_lines, lines_of(notes(fw, doc, lang, short, motor=True)), n3 - n0, nw)
+            under = 0.0
+            if nooked:                                 # the results' tables under the notes, the nook run
+                n0 = min(n0, region[1] - dy)           # down to the field's foot (``_results_nooked``)
+                under = _tables_size([[t] for t in nooked], 2)[1] + GAP
+            note_lines = with_motor(note_lines, lines_of(notes(fw, doc, lang, short, motor=True)), n3 - n0 - under, nw)
             nrec = note_block(note_lines, nw)          # from the left side of the band's box
             nb = (n1 + dx - nw, n3 + dy - _wh(nrec)[1], n1 + dx, n3 + dy)
+            if nooked:                                 # side by side under the notes, from the nook's left
+                items += set_columns([[t] for t in nooked], nb[0], nb[1] - GAP)
         else:
             nrec = note_block(note_lines, width)
             bottom = col_box[1] if shape in NOOKED else foot      # over the title block, or the column's foot
