@@ -7,7 +7,11 @@
   extent only grows with its leaves, so none of their trees fits. Hypothesis checks both facts on
   random drawings' sizes, and (slow) the search with and without the skipping chooses the same
   composition on whole scenes.
-- A benchmark (slow): the drag-link's A1 kinematics sheet composed cold.
+- The dynamics construction's search for the larger energy–mass diagram (``larger``) asks ``held``
+  only for bands at least as long as the classical composition's (``longer``): ``held`` then looks
+  at the shorter ones with 3.5-mm tables only where they decide (a 2.5-mm one holds), never with
+  2.5-mm ones — the same construction (slow: with and without it, on whole scenes).
+- Benchmarks (slow): the drag-link's A1 kinematics composition and its dynamics construction, cold.
 """
 from __future__ import annotations
 
@@ -134,3 +138,48 @@ def test_bench_the_draglinks_a1_kinematics_composition(benchmark, monkeypatch):
         return KS.plan.__wrapped__(st, form("A1"), SheetOptions(sheet="kinematics"))[0]
     p = benchmark.pedantic(cold, rounds=1, iterations=1)
     assert p.sheets == 1
+
+
+def _construction_cold(st, fmt="A1"):
+    """The dynamics construction of ``st`` on ``fmt`` composed from the start (no construction, its
+    measures nor its flywheels kept)."""
+    from graphplan.sheets import dynamics as D
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.sheets.form import form
+    f, args = form(fmt), SheetOptions(None, None, 0.5, "uk", "dynamics")
+    dyn = D._analysed(st, None)
+    key = D._construction_key(st, dyn, f, args)
+    from graphplan.drawing import flywheel as FW
+    for memo in (D._CONSTRUCTIONS, D._MEMOS, D._ONE):
+        memo.pop(key, None)
+    for memo in (D._BUILT, D._BANDS, FW._WITT):
+        memo.clear()
+    return D.construction(st, dyn, f, args)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["DRAGLINK_REVIEW59", "LINK61", "shaper"])
+def test_the_larger_diagrams_search_finds_what_the_plain_one_does(monkeypatch, name):
+    """``larger`` with ``held`` asked only for the bands it can take (``dynamics.PRUNED``) builds the
+    construction the plain search builds (every band ``held`` reaches drawn), tuple for tuple."""
+    import review_scenes
+    from conftest import example, scene_study
+
+    from graphplan.sheets import dynamics as D
+    st = scene_study(getattr(review_scenes, name)) if name.isupper() else example(name)
+    monkeypatch.setattr(D, "PRUNED", True)
+    pruned = _construction_cold(st)
+    monkeypatch.setattr(D, "PRUNED", False)
+    plain = _construction_cold(st)
+    assert pruned == plain
+
+
+@pytest.mark.slow
+def test_bench_the_draglinks_a1_dynamics_construction(benchmark):
+    """The drag-link's A1 dynamics construction (the classical scales, ``larger``, ``finer_energy``)
+    composed cold. Run with ``--benchmark-enable`` (stop 61: 57,8 → 47,3 s of CPU at load 20)."""
+    import review_scenes
+    from conftest import scene_study
+    st = scene_study(review_scenes.DRAGLINK_REVIEW59)
+    got = benchmark.pedantic(lambda: _construction_cold(st), rounds=1, iterations=1)
+    assert got[3] != "set"
