@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 from graphplan.drawing.layout import GAP, SHELF_MOST, Grid, Leaf, Row, Shelf, Stack, column_size, extent, extent_with, flow, split
 from graphplan.graphic.record import Record
 from graphplan.graphic.scales import LEGIBLE_MM, LEGIBLE_READS, PLAN_MM, series_choices   # the plans read: p_v a and π a at least this long,
-from graphplan.sheets.compose import NOTE_STEP, FACTORS, Family, choose_levels, coarser, field_of, finer, keep_out, notes_height
+from graphplan.sheets.compose import FACTORS, NOTE_STEP, Family, choose_levels, coarser, field_of, finer, keep_out, notes_height
 from graphplan.sheets.form import TABLES, Form
 from graphplan.util.errors import GraphplanError, said_error
 
