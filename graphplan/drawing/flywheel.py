@@ -722,6 +722,7 @@ def _graduate(rec: Record, hi: float, mu: float, lang: str, foot: float) -> None
 
 
 _WITT: dict = {}
+WITT_KEPT = 256      # energy–mass diagrams kept (``wittenbauer_record``): a construction's search draws ~130
 
 
 TANGENT_PAST = 20.0      # mm: a tangent drawn past its touch point at most this far along it (15 mm across as
@@ -736,8 +737,8 @@ def wittenbauer_record(f: Flywheel, lang: str = "uk", projections: tuple[float, 
     key = (id(f), lang, None if projections is None else tuple(round(v, 9) for v in projections), lb._SKETCH[-1])
     hit = _WITT.get(key)
     if hit is None or hit[0] is not f:
-        if len(_WITT) > 64:
-            _WITT.clear()
+        if len(_WITT) >= WITT_KEPT:         # the oldest forgotten (all of them at once had the dynamics
+            _WITT.pop(next(iter(_WITT)))    # construction draw 15 of its 129 diagrams twice: the drag-link)
         hit = _WITT[key] = (f, energy_mass(f, lang, projections))
     return hit[1].moved(0.0, 0.0)
 

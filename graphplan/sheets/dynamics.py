@@ -785,6 +785,7 @@ def _sizes(st: Study):
 
 
 _CONSTRUCTIONS: dict[tuple, tuple] = {}
+PRUNED = True      # ``larger`` asks ``held`` only for the bands it can take (``longer``); False: the plain search
 ENERGY_MOST = A_HEIGHT        # mm (× size): ΔT's span drawn at its own finer scale no taller than A(φ)'s height
 ENERGY_AXIS = 1               # … with the band's φ axis at most this many steps (``_lengths``) shorter than the one found
 ENERGY_GAIN = 1.25            # … and ΔT drawn at least this much taller (the series' least step, 2 → 2.5)
@@ -994,10 +995,12 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
                         return True
         return False
 
-    def held(L: float, size: float, quick: bool = scales_only, least: float = 0.0):
+    def held(L: float, size: float, quick: bool = scales_only, least: float = 0.0, longer: float | None = None):
         """The band at its longest φ axis some composition holds at (L, size) (the notes in the band's
         nook where they fit it), or None; ``quick``: (L, size) where it holds at its shortest;
-        ``least``: no φ axis shorter than this tried."""
+        ``least``: no φ axis shorter than this tried; ``longer``: the same answer where its φ axis is
+        at least this long, else None (``larger`` takes no other: the bands it cannot take are not
+        drawn where they decide nothing — the drag-link's dynamics sheet drew 128 bands)."""
         if quick:                         # the band at its shortest φ axis (the notes in the column)
             shortest = _lengths(L)[-1]
             for factor in (TABLES, 1.0):
@@ -1014,37 +1017,61 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
                         if tw <= W + 1e-9 and th <= H + 1e-9:
                             return L, size
             return None
-        for factor in (TABLES, 1.0):
-            leaves, tables, notes_, per = measured(L, size, factor)
-            for length in _lengths(L):
-                if length < least - 1e-9:
-                    break
-                box = band_least(built(L, size), length)        # no composition holds a band wider or
-                if box[0] > W + 1e-9 or box[1] > H + 1e-9:       # taller than the field: not drawn
-                    continue
-                if not least_holds(leaves, tables, notes_, Leaf("band", *box)):   # nor where no composition
-                    continue                     # holds even its least box (stop 58: LINK57 drew 152 bands)
-                leaves["band"], nooks = band_and_nooks(L, size, length)
-                # the notes in the band's nook where they fit it (the column then holds the tables alone)
-                for in_nook in (True, False):
-                    for shape in SHAPES:
-                        if in_nook and shape in NOOKED:     # the band at the right: no nook under ΔT(φ)
-                            continue                        # for the notes (or ω(φ) holds it: "nook")
-                        if shape == "nook" and not speed_in_nook(nooks, leaves["speed"], notes_):
-                            continue                        # ω(φ) over the notes in the band's nook
-                        for parts in (1, 2, 3):
-                            C = _column(f, tables, parts, None if in_nook or shape == "nook"
-                                        else lambda w: notes_height(notes_, w), shape)[0]
-                            tree = _tree(shape, leaves, C, foot)
-                            tw, th = extent(tree)
-                            if tw <= W + 1e-9 and th <= H + 1e-9 and (
-                                    not in_nook or notes_in_nook(nooks, per, shape, C, leaves)
-                                    or notes_in_widened(L, size, length, shape, C, leaves, per)):
-                                if shape == "speed" and parts == 1 and rowed(leaves, tables, shape, foot, in_nook,
-                                                                            notes_):
-                                    parts = ROWED
-                                return L, size, factor, shape, parts, length, in_nook
+        if longer is None:
+            for factor in (TABLES, 1.0):
+                got = scanned(L, size, factor, least)
+                if got is not None:
+                    return got
+            return None
+        # only a band at least ``longer`` long counts (``larger``): the search's answer is the first
+        # found in the order (3.5-mm tables, φ axes ≥ longer), (3.5 mm, shorter), (2.5 mm, ≥ longer),
+        # (2.5 mm, shorter) and counts only from the first or the third; the second is looked at
+        # (its bands drawn) only where the third finds one, the fourth never — the same answer
+        got = scanned(L, size, TABLES, max(least, longer))
+        if got is not None:
+            return got
+        got = scanned(L, size, 1.0, max(least, longer))
+        if got is None or scanned(L, size, TABLES, least, longer) is not None:
+            return None
+        return got
+
+    def scanned(L: float, size: float, factor: float, least: float, below: float | None = None):
+        """``held``'s search with the tables' lettering ``factor``: the first composition that holds
+        the band, its φ axes from the longest down to ``least`` (only those shorter than ``below``,
+        where given), or None."""
+        leaves, tables, notes_, per = measured(L, size, factor)
+        for length in _lengths(L):
+            if below is not None and length >= below - 1e-9:
+                continue
+            if length < least - 1e-9:
+                break
+            box = band_least(built(L, size), length)        # no composition holds a band wider or
+            if box[0] > W + 1e-9 or box[1] > H + 1e-9:       # taller than the field: not drawn
+                continue
+            if not least_holds(leaves, tables, notes_, Leaf("band", *box)):   # nor where no composition
+                continue                     # holds even its least box (stop 58: LINK57 drew 152 bands)
+            leaves["band"], nooks = band_and_nooks(L, size, length)
+            # the notes in the band's nook where they fit it (the column then holds the tables alone)
+            for in_nook in (True, False):
+                for shape in SHAPES:
+                    if in_nook and shape in NOOKED:     # the band at the right: no nook under ΔT(φ)
+                        continue                        # for the notes (or ω(φ) holds it: "nook")
+                    if shape == "nook" and not speed_in_nook(nooks, leaves["speed"], notes_):
+                        continue                        # ω(φ) over the notes in the band's nook
+                    for parts in (1, 2, 3):
+                        C = _column(f, tables, parts, None if in_nook or shape == "nook"
+                                    else lambda w: notes_height(notes_, w), shape)[0]
+                        tree = _tree(shape, leaves, C, foot)
+                        tw, th = extent(tree)
+                        if tw <= W + 1e-9 and th <= H + 1e-9 and (
+                                not in_nook or notes_in_nook(nooks, per, shape, C, leaves)
+                                or notes_in_widened(L, size, length, shape, C, leaves, per)):
+                            if shape == "speed" and parts == 1 and rowed(leaves, tables, shape, foot, in_nook,
+                                                                        notes_):
+                                parts = ROWED
+                            return L, size, factor, shape, parts, length, in_nook
         return None
+
     def larger(found_: tuple[float, float]):
         """The sheet's main construction first (LAYOUT.md): the energy–mass diagram (its scales μ_I, μ_T
         set by ``size`` alone) at the next larger sizes (``UPWARD``), the moments' abscissa L as long as
@@ -1063,7 +1090,7 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
         for size_ in reversed(ups):
             for L_ in Ls:
                 if may_hold(L_, size_):
-                    got = held(L_, size_, quick=False)
+                    got = held(L_, size_, quick=False, longer=base[5] if PRUNED else None)
                     if got is not None and got[3] in NOOKED and got[5] >= base[5] - 1e-9 and not adrift(got):
                         return got
         return base

@@ -10,10 +10,10 @@ import math
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
-from graphplan.drawing.layout import GAP, SHELF_MOST, Grid, Leaf, Row, Shelf, Stack, column_size, extent, flow, split
+from graphplan.drawing.layout import GAP, SHELF_MOST, Grid, Leaf, Row, Shelf, Stack, column_size, extent, extent_with, flow, split
 from graphplan.graphic.record import Record
 from graphplan.graphic.scales import LEGIBLE_MM, LEGIBLE_READS, PLAN_MM, series_choices   # the plans read: p_v a and π a at least this long,
-from graphplan.sheets.compose import FACTORS, Family, choose_levels, coarser, field_of, finer, notes_height
+from graphplan.sheets.compose import FACTORS, NOTE_STEP, Family, choose_levels, coarser, field_of, finer, keep_out, notes_height
 from graphplan.sheets.form import TABLES, Form
 from graphplan.util.errors import GraphplanError, said_error
 
@@ -302,6 +302,47 @@ def widened(width: float, spare: float) -> float | None:
     went from 1:2.5 to 1:5. None where there is not a step to spare."""
     wide = width + math.floor(spare / NOTES_STEP + 1e-9) * NOTES_STEP
     return wide if wide > width + 1e-9 else None
+
+
+PRUNED = True       # ``one_sheet_at`` skips the grid pairs whose least tree is past the field (``floor_of``);
+                    # False: every tree measured whole (the plain search, for the tests)
+FLOOR_SLACK = 1e-6  # mm: a tree counted past the field only by more than this (``fits_field``)
+
+
+def notes_floor(notes: list[list[str]]) -> float:
+    """The least height the notes (one list of lines per language) take at any width: one line a
+    paragraph (``notes_height`` wraps each into one line or more), and the line it adds."""
+    return max((len(lines) for lines in notes), default=0) * NOTE_STEP + NOTE_STEP
+
+
+def least_leaf(nodes) -> Leaf | None:
+    """A leaf as narrow as the narrowest of ``nodes`` and as low as the lowest (None where any is
+    None: the family has no drawings): a tree with it in place of any of them is no larger."""
+    nodes = list(nodes)
+    if not nodes or any(n is None for n in nodes):
+        return None
+    sizes = [extent(n) for n in nodes]
+    return Leaf("least", min(w for w, _ in sizes), min(h for _, h in sizes))
+
+
+def fits_field(node, W: float, H: float) -> bool:
+    """Whether a lower bound of trees (``floor_of``) may still fit the field W × H: where it does not
+    (past it by more than ``FLOOR_SLACK``), no tree it bounds does."""
+    w, h = extent(node)
+    return w <= W + FLOOR_SLACK and h <= H + FLOOR_SLACK
+
+
+def tree_sized(shape: str, P, D, vg, ag):
+    """``extent(tree(shape, P, D, vg, ag, C, (T, N)))`` as a function ``f(C, (T, N))`` of the column
+    and the split halves: the same sums and maxima to the bit (``extent_with``), the position plan,
+    the diagrams and the grids added up once (a sheet's search tries each grid pair with every
+    arrangement of its tables)."""
+    slots = [Leaf("column"), Leaf("tables"), Leaf("notes")]
+    sized = extent_with(tree(shape, P, D, vg, ag, slots[0], (slots[1], slots[2])), slots)
+
+    def size_with(C, half) -> tuple[float, float]:
+        return sized(((C.w, C.h), (half[0].w, half[0].h), (half[1].w, half[1].h)))
+    return size_with
 
 
 def _grids(n: int) -> list[int]:
@@ -624,10 +665,54 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
                 found = _arranged_ways(mu, shape, best_fill, D, P, vgrids, agrids, both)
             return found
 
+        floors: dict[tuple[str, bool], tuple[Leaf, tuple[Leaf, Leaf]] | None] = {}
+
+        def floor_of(shape: str, both: bool) -> tuple[Leaf, tuple[Leaf, Leaf]] | None:
+            """The least column (and split halves) any table arrangement of this pass can take in
+            ``shape``, its notes wrapped to any width (remembered; None: no arrangement): each
+            leaf the least width and a height no more than any arrangement's, its notes one line a
+            paragraph (``notes_height`` wraps each into one line or more). The tree's extent only
+            grows with its leaves' sizes (sums and maxima), so where the tree with these leaves
+            does not fit, no arrangement of a grid pair fits, nor does one with its notes wrapped
+            wider (``widened``: never narrower): the pair is skipped, as its trials would all
+            fail — the drag-link's sheet tried 400 000 trees, most of them too large."""
+            if (shape, both) not in floors:
+                least = notes_floor(nat.notes)
+                foot = keep_out(f)[3] - field_of(f)[1]
+                got = []
+                for way, C in enumerate(cols):
+                    if (ways[way][1] and ways[way][2]) != both:
+                        continue
+                    half = halves[way]
+                    if shape == "accel-column" and half[0].w > TITLE + NOTES_STEP:
+                        C, half = widen(way, math.floor(half[0].w / NOTES_STEP) * NOTES_STEP)
+                    T, N = half
+                    got.append((C.w, T.h + GAP + least + GAP + foot, T.w, T.h, N.w, least + GAP + foot))
+                floors[shape, both] = None if not got else (
+                    Leaf("column", min(g[0] for g in got), min(g[1] for g in got)),
+                    (Leaf("tables", min(g[2] for g in got), min(g[3] for g in got)),
+                     Leaf("notes", min(g[4] for g in got), min(g[5] for g in got))))
+            return floors[shape, both]
+
         def _arranged_ways(mu, shape, best_fill, D, P, vgrids, agrids, both):
             found = None
+            low = floor_of(shape, both)
+            if low is None:
+                return None
+            # where even the least grids of either family leave no room (each grid's columns against
+            # its rows), no pair does
+            if PRUNED and not fits_field(tree(shape, P, D, least_leaf(vgrids.values()), least_leaf(agrids.values()),
+                                              *low), W, H):
+                return None
             for vc, vg in vgrids.items():
                 for ac, ag in agrids.items():
+                    if not PRUNED:
+                        def size_with(C, half, vg=vg, ag=ag):
+                            return extent(tree(shape, P, D, vg, ag, C, half))
+                    elif not fits_field(tree(shape, P, D, vg, ag, *low), W, H):
+                        continue            # no arrangement of this pair fits (``floor_of``)
+                    else:
+                        size_with = tree_sized(shape, P, D, vg, ag)
                     for way, C in enumerate(cols):
                         if (ways[way][1] and ways[way][2]) != both:
                             continue
@@ -637,7 +722,7 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
                             # the notes under the tables as wide as they are (the column's width)
                             notes_w = math.floor(half[0].w / NOTES_STEP) * NOTES_STEP
                             C, half = widen(way, notes_w)
-                        tw, th = extent(tree(shape, P, D, vg, ag, C, half))
+                        tw, th = size_with(C, half)
                         if th > H + 1e-9 and tw < W - NOTES_STEP:
                             # too tall, room across: the notes wrapped wider (``widened``) — or,
                             # not ``wide``, only noted where that would make the room
@@ -648,7 +733,7 @@ def one_sheet_at(dr: Drafter, nat: Natural, f: Form, k_diagrams: float, even: bo
                             if w_ is not None and th - lowered(shape, C, half, C_, half_) <= H + 1e-9:
                                 C_, half_ = widen(way, w_)
                             if w_ is not None and th - lowered(shape, C, half, C_, half_) <= H + 1e-9:
-                                tw_, th_ = extent(tree(shape, P, D, vg, ag, C_, half_))
+                                tw_, th_ = size_with(C_, half_)
                                 if not wide:
                                     if th_ <= H + 1e-9:
                                         near.append(dict(mu))
