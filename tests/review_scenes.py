@@ -9352,3 +9352,59 @@ delta = 0.0833
 efficiency = 0.85
 synchronous_rpm = 1500
 '''
+
+
+# gears61's own (stop 61): a ROCKING KNIFE-EDGE follower turned by a CLOCKWISE cam (the mirror of stop 60 on a knife
+# edge), a cosine rise of 110° straight into a cycloidal return of 100° (NO far dwell), a near dwell of 150°, a swing
+# of 24°, 12 divisions — a combination not in this file before.
+GEARS61_OWN_CAM = '''
+title = "Кулачковий механізм з коромисловим загостреним штовхачем (власний 61)"
+title_en = "Cam with a rocking knife-edge follower (own check 61)"
+designation = "ТММ.КМ.61.200"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-61"
+organisation = "НУБіП України"
+
+[cam]
+follower = "rocking"
+swing_deg = 24
+arm = 0.1
+centre_distance = 0.12
+roller_radius = 0
+phases_deg = { rise = 110, dwell_far = 0, return = 100, dwell_near = 150 }
+laws = { rise = "cosine", return = "cycloidal" }
+pressure_angle_deg = { rise = 40, return = 45 }
+rpm = 120
+direction = "cw"
+divisions = 12
+'''
+
+# gears61's own (stop 61): a pair 12/20 of small ratio and module 3 mm with the shifts by the rule ("auto"), and a
+# type-A train wanted at u1H = 8 (z3/z1 = 7: a large sun-to-ring ratio, the neighbourhood of three large planets
+# tested), 1440 rpm — a type-A ratio above any in this file before.
+GEARS61_OWN_GEARS = '''
+title = "Зубчаста передача 12/20 і однорядний планетарний редуктор (власний 61)"
+title_en = "A gear pair 12/20 and a one-row planetary reducer (own check 61)"
+designation = "ТММ.ЗП.61.200"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-61"
+organisation = "НУБіП України"
+
+[gears]
+z = [12, 20]
+module = 0.003
+shifts = "auto"
+
+[planetary]
+type = "A"
+ratio = 8.0
+planets = 3
+module = 0.002
+rpm = 1440
+'''

@@ -891,9 +891,17 @@ def test_the_a1_gear_sheet_fills_its_field_in_zones(name, lang, tmp_path):
     area = lambda b: (b[2] - b[0]) * (b[3] - b[1])                       # noqa: E731
     drawings = ("meshing", "sliding", "planetary")
     assert area(ext["meshing"]) > area(ext["sliding"])
-    column = [ext[n] for n in ("geometry", "quality", "train", "notes")]
+    # stop 61: where the λ diagrams stand in the row beside the planetary pictures the pair's notes may stand
+    # under them (``gears._composed``: the row had left a 300 × 120-mm blank there) and the column ends with the
+    # train's notes; the column's last part is on the title block either way, the notes under λ left-aligned
+    # with them, under their caption and over the field's foot
+    split = "train notes" in ext
+    column = [ext[n] for n in ("geometry", "quality", "train", "train notes" if split else "notes")]
     left = min(b[0] for b in column)
-    assert all(b[0] >= max(ext[n][2] for n in drawings) for b in column)     # the column right of the drawings
+    assert all(b[0] >= max(ext[n][2] for n in drawings + (("notes",) if split else ())) for b in column)
+    if split:
+        n, s = ext["notes"], ext["sliding"]
+        assert n[3] <= s[1] and abs(n[0] - s[0]) < 1.0 and n[1] >= y0 and n[2] - n[0] <= s[2] - s[0] + 1e-6
     assert abs(column[0][3] - y1) < 1.0                                  # Table 1 at the field's top
     assert 0.0 <= column[-1][1] - keep_out(f)[3] <= GAP + 1.0             # the notes on the title block
     assert [b[3] for b in column] == sorted((b[3] for b in column), reverse=True)

@@ -105,7 +105,7 @@ WORDS = {
                    "{n} pairs meet the conditions of Table 2)",
            "data": "The pair's data: z_1 = {z1}, z_2 = {z2}, m = {m} mm, α = {a}°, h^*_a = {h}, c^* = {c}{x}",
            "data_x": ", x_1 = {x1}, x_2 = {x2}",
-           "train_data": "The planetary train's data: type {t}, {u}, K = {k}, m = {m} mm, {w}",
+           "train_data": "Data of the planetary train: type {t}, {u}, K = {k}, m = {m} mm, {w}",
            "train_u": "u_{{1H}} = {u}", "train_z": "{z}",
            "rpm": "n_1 = {n} rpm (ω_1 = {w} rad/s)", "omega1": "ω_1 = {w} rad/s",
            "scale": "Meshing: the module drawn {md} mm, the whole depth 2.25·m = {h} mm; drafting precision {p} mm",
@@ -579,6 +579,12 @@ def _size(r: Record) -> tuple[float, float]:
 
 SCHEME_SHARES = (1.4, 1.0, 0.65)   # vA × its size tried with each scale of the scheme, the longest first
 #                                       (vA and h cancel in every ω: a longer vA makes the plan no taller for its S)
+ALONE_SHARES = (4.0, 3.0, 2.0)     # and before them where the pictures have the row under the meshing alone (the λ
+#                                   diagrams beside the meshing): stop 61, GEARS60's pictures at 1.4 stood 360 mm
+#                                   wide centred in a 620-mm row, 150 × 340 mm blank each side; at 4 the velocity
+#                                   picture and the plan take the row (ω1's segment 190 → 380 mm, u1H within ±0,43 %
+#                                   for ±0,86 %) — where the λ diagrams share the row, their growth takes its room
+#                                   (``_lambda_filling``)
 
 
 def filled(tr, precision: float, lang: str, ring_mm: float, va_mm: float, room_w: float, room_h: float,
@@ -716,7 +722,8 @@ def _grown(tr, precision: float, lang: str, f: Form, mesh, plan: Record, vel, pa
         ring = r3 / mu * (1 + 1e-9)                              # (``construct_train`` takes μl = this scale)
         if top / mu + 26.0 + min(H_MIN, vel.h) + 20.0 > room_h:   # the scheme, the plan under it, its labels
             continue
-        for va_share in SCHEME_SHARES:    # the longer vA where it fits (the plan then no taller for its S)
+        for va_share in (() if lam_w else ALONE_SHARES) + SCHEME_SHARES:   # the longer vA where it fits (the plan
+            #                                                             then no taller for its S)
             d = filled(tr, precision, lang, ring, 60.0 * ring / 80.0 * va_share, room_w, room_h, min(H_MIN, vel.h))
             if d is not None:
                 if best is None or _rank(d[0], tr.ratio) < _rank(best[0], tr.ratio):   # (a tie: the larger)
@@ -740,7 +747,7 @@ def _grown(tr, precision: float, lang: str, f: Form, mesh, plan: Record, vel, pa
         ring = r3 / mu * (1 + 1e-9)
         if 2.0 * top / mu + 13.0 + 20.0 > room_h:                # both halves of the scheme, its caption
             continue
-        for va_share in SCHEME_SHARES:
+        for va_share in (() if lam_w else ALONE_SHARES) + SCHEME_SHARES:
             d = filled(tr, precision, lang, ring, 60.0 * ring / 80.0 * va_share, wide, room_h, min(H_MIN, vel.h),
                        full=True)
             if d is not None and (whole is None or _rank(d[0]) < _rank(whole[0])):
@@ -983,8 +990,7 @@ def on_sheet(g: Gears, sol, f: Form, precision: float = 0.5, lang: str = "uk"):
     lines = [x for part in parts for x in part]
     pages = None
     for k in SIZES:                       # the tables as the other sheets draw theirs, in 7-mm rows, else ruled
-        side, width = _column(tables, lines, k)
-        pages = zones(drawings, side, f, width)
+        pages = _composed(drawings, tables, parts, f, k)
         if pages is not None:
             break
     if pages is not None and mesh is not None and plan is not None:
@@ -1094,10 +1100,13 @@ def _lambda_filling(g: Gears, sol, mesh, vel, plan, f: Form, lang: str, pages, k
             continue
         mesh.lam = sliding_diagram(sol.pair, mesh, lambda_unit(row_h, sol.pair.g / mu_x), mu_x)
         drawings, tables, parts = _blocks(g, sol, mesh, vel, plan, lang)
-        side, width = _column(tables, [x for part in parts for x in part], k)
-        got = zones(drawings, side, f, width)
-        if got is not None:
-            return got
+        # at the tables' size ``k``, else the next but the ruled (stop 61: with the pair's notes under the λ
+        # diagrams the column holds the 8,4-mm rows, where the notes whole in it had 7-mm rows — the λ
+        # diagrams of 11/53 grow to 5:1 with the 7-mm rows, the notes whole, as before)
+        for size in SIZES[SIZES.index(k):-1] or [k]:
+            got = _composed(drawings, tables, parts, f, size)
+            if got is not None:
+                return got
     mesh.lam = old
     return pages
 
@@ -1377,14 +1386,47 @@ def _column(tables: list[Leaf], lines: list[str], k) -> tuple[list[Leaf], float]
     return grown + [Leaf("notes", record=note_block(lines, width))], width
 
 
+def _composed(drawings: list[Leaf], tables: list[Leaf], parts: list[list[str]], f: Form, k) -> list[list[Placed]] | None:
+    """The A1 sheet in zones (``zones``) with its tables at size ``k``, the notes in one of two places: all in
+    the column under the tables (as before stop 61), or — where the λ diagrams stand in the row under the
+    meshing beside the planetary pictures — the pair's part (its task data and notes) under the λ diagrams it
+    follows, wrapped to their width, the train's part (its data, notes and the marks' legends) at the column's
+    foot under Table 3. Of the two the one whose largest blank (``blank``) is smaller, the column's on a tie.
+    Stop 61: the λ diagrams (λ from −3 to 1, four units no taller than 0,75·N1N2) are shorter than the planetary
+    pictures beside them, and the row left a 300 × 120-mm blank under them (GEARS57; GEARS59 245 × 143) while
+    the column ran down to the title block; a teacher reads the pair's drawings, then what the pair's notes say
+    of them, then the train's, the tables in their column."""
+    side, width = _column(tables, [x for part in parts for x in part], k)
+    tried = [zones(drawings, side, f, width)]
+    data, own = parts[0], parts[1:]
+    lam = next((d for d in drawings if d.name == "sliding"), None)
+    if lam is not None and len(data) == 2 and len(own) == 2:       # a pair and a train
+        side, width = _column(tables, [data[1]] + own[1], k)
+        side[-1] = Leaf("train notes", record=side[-1].record)
+        under = Leaf("notes", record=note_block([data[0]] + own[0], lam.w))
+        tried.append(zones(drawings, side, f, width, under))
+    tried = [t for t in tried if t is not None]
+    return min(tried, key=lambda t: blank(t[0], f)) if tried else None
+
+
+def blank(placed: list[Placed], f: Form) -> float:
+    """The largest blank rectangle (mm²) one sheet's ``placed`` leave in its field off the title block
+    (``kinlayout._empty_rect``: on a 5-mm grid, a blank counted where both its sides reach 50 mm)."""
+    from graphplan.sheets.kinlayout import _empty_rect
+    return _empty_rect(field_of(f), [keep_out(f)] + [p.record.bounds() for p in placed])
+
+
 SLIDING_H = 125.0        # the λ diagrams' height with their caption, mm (λ from −3 to 1 at 20 mm, labels)
 
 
-def zones(drawings: list[Leaf], side: list[Leaf], f: Form, width: float) -> list[list[Placed]] | None:
+def zones(drawings: list[Leaf], side: list[Leaf], f: Form, width: float, under: Leaf | None = None
+          ) -> list[list[Placed]] | None:
     """One sheet in zones (LAYOUT.md): the meshing on top (the largest drawing), under it the λ
     diagrams beside the planetary pictures, the tables and the notes in the title block's column on
-    the right, above the block. None when the field cannot hold them (the caller flows them over a
-    set)."""
+    the right, above the block (the column's last part, its notes, on the block). ``under``: notes
+    that stand under the λ diagrams in the row, at their left (``_composed``) — None where the λ
+    diagrams stand beside the meshing. None when the field cannot hold them (the caller flows them
+    over a set)."""
     x0, y0, x1, y1 = field_of(f)
     keep = keep_out(f)
     right = max(width, x1 - keep[0])
@@ -1402,6 +1444,11 @@ def zones(drawings: list[Leaf], side: list[Leaf], f: Form, width: float) -> list
         else ("meshing",)                 # the λ diagrams beside the meshing where the two fit across
     top = [d for d in drawings if d.name in up]
     row = [d for d in drawings if d.name not in up]
+    if under is not None:
+        lam = next((d for d in row if d.name == "sliding"), None)
+        if lam is None:
+            return None
+        row = [Leaf(d.name, max(d.w, under.w), d.h + GAP + under.h, d.record) if d is lam else d for d in row]
     row_w = sum(d.w for d in row) + GAP * max(len(row) - 1, 0)
     row_h = max((d.h for d in row), default=0.0)
     top_h = max((d.h for d in top), default=0.0)
@@ -1427,13 +1474,19 @@ def zones(drawings: list[Leaf], side: list[Leaf], f: Form, width: float) -> list
             rec = centred(d.record, box)
             if d.name == "sliding":       # the λ diagrams, shorter than the planetary pictures, at the row's
                 rec = rec.moved(0.0, box[3] - rec.bounds()[3])   # top under the meshing they are read off
-            out.append(Placed(d.name, rec, box))          # (stop 46: centred, they left a hole over them)
+                if under is not None:     # (stop 46: centred, they left a hole over them), the notes under them
+                    b = rec.bounds()
+                    rec = rec.moved(box[0] - b[0], 0.0)
+                    nb = (box[0], box[1], box[2], b[1] - GAP)
+                    out.append(Placed(under.name, top_left_of(under.record, nb), nb))
+                    box = (box[0], b[1], box[2], box[3])
+            out.append(Placed(d.name, rec, box))
             x = box[2] + spare_x + GAP
     y = y1
-    tabs = [t for t in side if t.name != "notes"]
+    tabs = [t for t in side if t.name not in ("notes", "train notes")]
     spare = (y1 - keep[3] - GAP - need) / max(len(tabs), 1)      # the column's spare height between its parts
     for t in side:
-        if t.name == "notes":                                      # the notes stand on the title block
+        if t.name in ("notes", "train notes"):                     # the notes stand on the title block
             y = keep[3] + GAP + t.h
         box = (x1 - right, y - t.h, x1, y)
         out.append(Placed(t.name, top_left_of(t.record, box), box))
