@@ -284,7 +284,9 @@ def _trial_worst(d: Diagrams, turns: np.ndarray, method: str, correct: bool) -> 
     """The construction over the division ordinates ``turns`` (containing the drawing's positions),
     read at the positions: the largest |δ| (judged_pct) at the drafting precision and exactly."""
     x = d.L * turns / 360.0
-    s_mm = d.sign * exact_motion(d.study, d.output, turns)[0] / d.mu_s
+    s_t, v_t, _ = exact_motion(d.study, d.output, turns)
+    s_mm = d.sign * s_t / d.mu_s
+    zeros = stops(x, v_t, d.maxima["v"])    # the v curve through 0 at the stops, as ``chord_diagrams`` draws it
     k = d.at_positions
     idx = np.searchsorted(np.round(turns, 9), np.round(d.turn[k], 9))
     out = []
@@ -294,7 +296,7 @@ def _trial_worst(d: Diagrams, turns: np.ndarray, method: str, correct: bool) -> 
                                    d.angle_error_deg if precision and d.method == "tangents" else
                                    (ANGLE_ERROR_DEG if precision else 0.0), SEED)
         else:
-            r = construct(x, s_mm, d.L, d.H1, d.H2, precision, correct)
+            r = construct(x, s_mm, d.L, d.H1, d.H2, precision, correct, zeros)
         worst = 0.0
         for key, got, mu in (("s", r.s, d.mu_s), ("v_at", r.v_at, d.mu_v), ("a_at", r.a_at, d.mu_a)):
             pct = judged_pct(d.sign * got[idx] * mu, d.truth[key][k], d.maxima[key[0]])
