@@ -38,35 +38,6 @@ def test_the_s_scale_is_always_a_series_value(span, height, fit):
         assert height / 2 * (1 - 1e-9) < drawn <= height * (1 + 1e-9)
 
 
-GATE61 = '''# review61 (b): a crank-rocker of a hopper's swing gate: O1A 0.08 (ccw, 80 rpm), AB 0.30, O2B 0.20, O2 (0.32, -0.08)
-title = "Шарнірний чотириланковий механізм привода засувки бункера"
-[frame.points]
-O1 = [0, 0]
-O2 = [0.32, -0.08]
-[crank]
-name = "O1A"
-pivot = "O1"
-pin = "A"
-length = 0.08
-rpm = 80
-direction = "ccw"
-[[link]]
-name = "AB"
-number = 2
-joints = ["A", "B"]
-length = 0.30
-[[link]]
-name = "O2B"
-number = 3
-joints = ["O2", "B"]
-length = 0.20
-[branch]
-B = 1
-[positions]
-count = 12
-start = "working"
-output = "O2B"
-'''
 
 # generated rockers (r, d, l2, l3) and sliders (r, l, e, guide angle): Grashof / assemblable over the turn
 ROCKERS = [(0.08, 0.33, 0.30, 0.20), (0.05, 0.30, 0.28, 0.15), (0.03, 0.20, 0.22, 0.12), (0.06, 0.25, 0.30, 0.25)]
@@ -74,8 +45,8 @@ SLIDERS = [(0.05, 0.20, 0.0, 0.0), (0.04, 0.18, 0.03, 0.0), (0.06, 0.30, -0.02, 
 
 
 def _scenes():
-    from review_scenes import LINK48
-    out = [("gate61", GATE61), ("LINK48", LINK48)]
+    from review_scenes import KIN61B_GATE, LINK48
+    out = [("gate61", KIN61B_GATE), ("LINK48", LINK48)]
     for i, (r, d, l2, l3) in enumerate(ROCKERS):
         text, ok = rm.rrr(r, d, l2, l3, 12.0, 1)
         assert ok
