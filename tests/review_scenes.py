@@ -9408,3 +9408,36 @@ planets = 3
 module = 0.002
 rpm = 1440
 '''
+
+
+# kin61b (stop 61): review 61's crank-rocker of a hopper swing gate (b_gate_en) — its A1 diagrams had
+# μψ 0,011 rad/mm (ψmax/h off the series); now 0,01 (ψ 83 mm in the 80-mm allowance).
+KIN61B_GATE = '''# review61 (b): a crank-rocker of a hopper's swing gate: O1A 0.08 (ccw, 80 rpm), AB 0.30, O2B 0.20, O2 (0.32, -0.08)
+title = "Шарнірний чотириланковий механізм привода засувки бункера"
+[frame.points]
+O1 = [0, 0]
+O2 = [0.32, -0.08]
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.08
+rpm = 80
+direction = "ccw"
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.30
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.20
+[branch]
+B = 1
+[positions]
+count = 12
+start = "working"
+output = "O2B"
+'''

@@ -53,7 +53,7 @@ def cmd_diagrams(args) -> int:
         if (all(g is None for g in given) and not (args.adaptive or args.correct) and args.tolerance == 0.5
                 and scene.get("method", "chords") == "chords"):
             chosen = drawn["diagrams"]
-            extra = {"redrawn": chosen["redrawn"], "fit": chosen.get("fit", False)}   # μs = s_max/h where redrawn so
+            extra = {"redrawn": chosen["redrawn"], "fit": chosen.get("fit", False)}   # the finer series μs where redrawn so
             args.adaptive, args.correct = chosen.get("adaptive", False), chosen.get("correct", False)
             args.tolerance = chosen.get("tolerance", args.tolerance)
     d = chord_diagrams(st, point=pick(args.point, "point", None), divisions=pick(args.divisions, "divisions", None),

@@ -27,6 +27,7 @@ from graphplan.util.words import fixed, num, uk_count
 from graphplan.graphic.chords import (chord_error_estimate, integrate_by_chords, midpoints, periodic_spline,
                      pole_heights, read, standard_scale)
 from graphplan.graphic import qualitative
+from graphplan.graphic.scales import at_most
 from graphplan.graphic.correction import area_correction
 from graphplan.graphic.tangents import (ANGLE_ERROR_DEG, MAX_ANGLE_ERROR_DEG, SEED, TangentReading,
                                         construct_tangents)
@@ -283,7 +284,9 @@ def _trial_worst(d: Diagrams, turns: np.ndarray, method: str, correct: bool) -> 
     """The construction over the division ordinates ``turns`` (containing the drawing's positions),
     read at the positions: the largest |δ| (judged_pct) at the drafting precision and exactly."""
     x = d.L * turns / 360.0
-    s_mm = d.sign * exact_motion(d.study, d.output, turns)[0] / d.mu_s
+    s_t, v_t, _ = exact_motion(d.study, d.output, turns)
+    s_mm = d.sign * s_t / d.mu_s
+    zeros = stops(x, v_t, d.maxima["v"])    # the v curve through 0 at the stops, as ``chord_diagrams`` draws it
     k = d.at_positions
     idx = np.searchsorted(np.round(turns, 9), np.round(d.turn[k], 9))
     out = []
@@ -293,7 +296,7 @@ def _trial_worst(d: Diagrams, turns: np.ndarray, method: str, correct: bool) -> 
                                    d.angle_error_deg if precision and d.method == "tangents" else
                                    (ANGLE_ERROR_DEG if precision else 0.0), SEED)
         else:
-            r = construct(x, s_mm, d.L, d.H1, d.H2, precision, correct)
+            r = construct(x, s_mm, d.L, d.H1, d.H2, precision, correct, zeros)
         worst = 0.0
         for key, got, mu in (("s", r.s, d.mu_s), ("v_at", r.v_at, d.mu_v), ("a_at", r.a_at, d.mu_a)):
             pct = judged_pct(d.sign * got[idx] * mu, d.truth[key][k], d.maxima[key[0]])
@@ -521,19 +524,21 @@ def division_turns(divisions: int | Sequence[float], where: str = "divisions",
 
 
 def fitted_scale(value: float) -> float:
-    """μs = s_max / h (seed 002, step 5: μS = l/h, the stroke's segment h chosen on the sheet),
-    written to two significant figures and rounded up so the stroke stays within h mm:
-    0.1 m over 80 mm → 0,00125 → 0,0013 m/mm (76.9 mm)."""
-    e = math.floor(math.log10(value)) - 1
-    return round(math.ceil(value / 10.0 ** e - 1e-9) * 10.0 ** e, 12)
+    """The s diagram's μs fitted to its height allowance where the series' standard value (``at_least``:
+    the stroke within the allowance) draws it low: the next finer value of the same series 1, 2, 2.5,
+    4, 5 × 10^k (``at_most``), the s diagram taller than the allowance by less than the series' step
+    (the caller checks the room) — a student takes a scale off the series, never the seed's μS = l/h
+    to two figures (review 61 #2: μψ 0,011 rad/mm where 0,01 draws ψ 83 mm in an 80-mm allowance):
+    0.1 m over 80 mm → 0,00125 → 0,001 m/mm (100 mm)."""
+    return at_most(value)
 
 
 def choose_mu_s(st: Study, unit: str, s_range: float, height: float | None, fit: bool = False) -> float:
     """μs = μl by default (the crank 35–70 mm on the position plan, standard series); coarser when
-    the stroke would be taller than 100 mm; fitted to ``height`` mm when given — a standard value,
-    or with ``fit`` the seed's μs = s_max/h (``fitted_scale``: the s diagram its allowance's height
-    where the series' next step leaves it little more than half of it). Angles: fitted to 80 mm
-    (or ``height``)."""
+    the stroke would be taller than 100 mm; fitted to ``height`` mm when given — a standard value
+    drawing s within it, or with ``fit`` the series' next finer value (``fitted_scale``: the s diagram
+    taller than its allowance, where the standard value leaves it little more than half of it).
+    Angles: fitted to 80 mm (or ``height``). Always a value of the series 1, 2, 2.5, 4, 5 × 10^k."""
     span = max(s_range, 1e-12)
     if height is not None:
         return fitted_scale(span / height) if fit else standard_scale(span / height)
@@ -596,8 +601,8 @@ def chord_diagrams(st: Study, point: str | None = None, divisions: int | Sequenc
     ``chosen``: the positions of the lab's table (default: 1 and the first past half a turn).
     ``method``: "chords" (``correct``: the lab's area correction) or "tangents" (each tangent off by
     up to ``angle_error_deg``, deterministic from ``seed``; see graphic.tangents). ``redrawn``: what
-    graphic.redraw changed to make these options (kept for the notes and the JSON). ``fit``: μs =
-    s_max/h to two figures, the s diagram ``height`` mm high (``choose_mu_s``), not a standard value."""
+    graphic.redraw changed to make these options (kept for the notes and the JSON). ``fit``: μs the
+    series' next value finer than the one that draws s within ``height`` mm (``choose_mu_s``): s taller."""
     _check_positive(L=L, H1=H1, H2=H2, tolerance=tolerance)
     if method not in METHODS:
         raise GraphplanError(f"--method must be chords or tangents, got {method!r}")

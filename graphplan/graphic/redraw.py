@@ -332,12 +332,14 @@ def fitted(probe: "Probe", base: dict[str, Any], first_peaks, zone: float, preci
            fixed: frozenset[str], poles, seen: set) -> tuple[dict[str, Any], float] | None:
     """A wrong first drawing whose every readable right redrawing outgrew the room, its s diagram
     drawn by a standard μs at less than ``FIT_BELOW`` of its allowance (the next step of the series
-    would be twice as tall): the seed's μs = s_max/h (``choose_mu_s`` ``fit``: seed 002, step 5),
-    the s diagram as high as allowed, with the first poles, then each pair of the menu nearest them,
-    with and without the correction — of the readable right ones (v and a at least ``READABLE_MM``),
-    the one read closest to the exact at the positions that ``fits``. Review: the V-compressor's A1
-    drew s 50 mm high under an 80-mm allowance (μs 0,002; 0,001 draws 100 mm) and, its first a
-    diagram wrong, took H1 15 mm for a right one: v and a 10 and 12 mm high under a 70-mm band."""
+    would be up to twice as tall): the series' next finer μs (``choose_mu_s`` ``fit``), the s diagram
+    taller than its allowance by less than that step, with the first poles, then each pair of the
+    menu nearest them, with and without the correction — of the readable right ones (v and a at least
+    ``READABLE_MM``), the one read closest to the exact at the positions that ``fits`` (the room: a
+    student takes 0,01 rad/mm where it fits, else the standard 0,02, never the seed's ψmax/h to two
+    figures, 0,011 — review 61 #2). Review: the V-compressor's A1 drew s 50 mm high under an 80-mm
+    allowance (μs 0,002) and, its first a diagram wrong, took H1 15 mm for a right one: v and a 10 and
+    12 mm high under a 70-mm band."""
     height = base.get("height")
     if height is None or base.get("fit") or first_peaks[2] >= FIT_BELOW * float(height):
         return None
@@ -429,7 +431,7 @@ def redraw(st, options: dict[str, Any], precision: float, poles=LAB_POLES, longe
             break
         if fits is None or fits({**options, **change}, bool(wrong)):
             return done(change, off)
-    if wrong:    # a low s under a tall allowance: μs = s_max/h (seed 002), before a flat drawing
+    if wrong:    # a low s under a tall allowance: the series' next finer μs, before a flat drawing
         found = fitted(probe, base, first_peaks, zone, precision, fits, options, fixed, poles, seen)
         if found is not None:
             return done(*found)

@@ -436,15 +436,13 @@ def redrawn_note(d: Diagrams, lang: str, short: bool = False, largest: float | N
             parts.append(f"діаграма {s0} {'вища' if up else 'нижча'}: {mu(scale_symbols(d)[0])} = {fmt(d.mu_s, lang)}"
                          if uk else f"the {s0} diagram {'taller' if up else 'lower'}: "
                                     f"{mu(scale_symbols(d)[0])} = {fmt(d.mu_s, lang)}")
-        elif key == "fit":      # seed 002: μs = s_max/h, the s diagram its allowance's height
-            s0, top = f"{d.symbols[0]}_{{{d.sub}}}", f"{d.symbols[0]}_{{max}}"
-            per = f"{units(d, lang)[0]}/{mm}"
+        elif key == "fit":      # the series' next finer μs: the s diagram taller than its allowance
             if short:
-                parts.append(f"{mu(scale_symbols(d)[0])} = {top}/h = {fmt(d.mu_s, lang)} {per}")
+                parts.append(f"{mu(scale_symbols(d)[0])} = {fmt(d.mu_s, lang)} {units(d, lang)[0]}/{mm}")
                 continue
-            parts.append(f"діаграма {s0} вища: {mu(scale_symbols(d)[0])} = {top}/h = {fmt(d.mu_s, lang)} {per}"
-                         if uk else f"the {s0} diagram taller: {mu(scale_symbols(d)[0])} = {top}/h = "
-                                    f"{fmt(d.mu_s, lang)} {per}")
+            s0 = f"{d.symbols[0]}_{{{d.sub}}}"
+            parts.append(f"діаграма {s0} вища: {mu(scale_symbols(d)[0])} = {fmt(d.mu_s, lang)}" if uk else
+                         f"the {s0} diagram taller: {mu(scale_symbols(d)[0])} = {fmt(d.mu_s, lang)}")
         elif key == "correct":
             parts.append("з корекцією площ" if uk else "with the area correction")
         elif key == "adaptive":
