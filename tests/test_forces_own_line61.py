@@ -98,3 +98,40 @@ def test_the_inclines_forces_lie_on_their_lines():
 def test_forces_lie_on_their_lines(scene, scales):
     import review_scenes
     assert _all(getattr(review_scenes, scene), **scales) == []
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("scene,label,marks,named", [
+    ("FRC56_PUSHER", "II(4-5)", ("", " II"), ("Φ4", "Φ5", "G4", "G5")),
+    ("LINK59", "II(4-5)", ("", " II", " III"), ("Φ5", "G4", "G5")),
+    ("FRC60B_INCLINE", "II(2-3)", ("", " II"), ("Φ2", "Φ3", "G2", "G3")),
+])
+def test_naming_every_short_side_keeps_every_detail(scene, label, marks, named):
+    """Review 60 #2: naming every short side of a detail (the crank's Φ1 at 2.5 mm) lost FRC56_PUSHER's
+    details I, II and LINK59's I–III (the details with every name found no room): where none with every
+    name has room, the detail is drawn as before, so every detail stays and is named; the names checked
+    are the group's forces whose sides the plan draws under the detail's lettering bound or through it."""
+    import review_scenes
+    from graphplan.drawing.forces import polygon_record
+    from graphplan.drawing.labels import collisions
+    from graphplan.sheets import forces as sf
+    from graphplan.sheets.compose import SheetOptions
+    from graphplan.util.words import force_symbol
+    from conftest import scene_study
+    fp = sf.ForceDrafter(scene_study(getattr(review_scenes, scene)), SheetOptions(precision=0.5, sheet="forces")).fp()
+    gp = next(g for g in fp.groups if g.label == label)
+    rec = polygon_record(fp, gp, "uk")
+    for m in marks:
+        assert f"mu_F detail{m}" in rec.scales, (m, rec.scales)
+    for m in marks:
+        step = next(q.step for q in rec.items if q.kind == "text" and q.text.startswith((m.strip() or "I") + " (μ_F"))
+        drawn = {q.text for q in rec.items if q.step == step and q.kind in ("vector", "segment") and q.text
+                 and abs(complex(*q.points[1]) - complex(*q.points[0])) >= 1.0}
+        assert drawn, step
+        texts = {q.text for q in rec.items if q.step == step and q.kind == "text"}
+        # every force drawn in the detail named there (a component coinciding with its reaction by the
+        # reaction's letter)
+        missing = {n for n in drawn if force_symbol(n, "uk") not in texts and not n.startswith("R^")}
+        assert not missing, (m, missing, texts)
+    assert {force_symbol(n, "uk") for n in named} <= {q.text for q in rec.items if q.kind == "text"}
+    assert collisions(rec) == []

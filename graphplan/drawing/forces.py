@@ -1788,8 +1788,12 @@ def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str
     tries = [(mu, False) for mu in d.choices] + ([(d.choices[0], True)] if beside else [])
     if row:                 # a row begun under the plan: the next detail in it (I, II, III in order)
         tries = [(mu, True) for mu in d.choices]
-    for mu, out in tries:
-        det = _detail_drawing(d, mu, sides, same, mu_F, lang, step, name)
+    # every side it draws named first (review 60 #2: the crank's Φ1, 2.5 mm in the detail, drawn
+    # unnamed), at every μF_I and place; where no such detail has room, the sides under ``TINY_MM``
+    # unnamed as before (named so, FRC56_PUSHER's I and II and LINK59's I–III found no room at all)
+    tries = [(mu, out, True) for mu, out in tries] + [(mu, out, False) for mu, out in tries]
+    for mu, out, every in tries:
+        det = _detail_drawing(d, mu, sides, same, mu_F, lang, step, name, every=every)
         if out and row is not None:         # under the plan, in a row from its left
             if not row:
                 row[:] = [rb[0], rb[1] - DETAIL_GAP]
@@ -1824,9 +1828,10 @@ DETAIL_MID_MM = 8.0     # a detail's side shorter than this is named at its midd
 
 
 def _detail_drawing(d: PlanDetail, mu: float, sides: list, same: dict[str, str], mu_F: float, lang: str,
-                    step: str, name: str = "I") -> Record:
+                    step: str, name: str = "I", every: bool = False) -> Record:
     """The detail at μF_I = ``mu``: every side through the window, enlarged μF/μF_I times about its
-    middle (a side's head out of the window drawn as its line), named; its name over it."""
+    middle (a side's head out of the window drawn as its line), named (``every``: however short
+    there, else from ``TINY_MM``); its name over it."""
     from graphplan.graphic.forceplans import Side
     k = mu_F / mu
     x0, y0, x1, y1 = d.box
@@ -1860,9 +1865,8 @@ def _detail_drawing(d: PlanDetail, mu: float, sides: list, same: dict[str, str],
         drawn.append(Side(s.name, A, B, s.role))
     if x0 <= 0.0 <= x1 and y0 <= 0.0 <= y1:
         det.point(_pt(-c * k), layer="vectors", step=dstep)
-    # (the reaction read here named however short: its reading is what the detail is for; naming every
-    # short side, review 60 #2's Φ1 at 2.5 mm, lost FRC56_PUSHER's and LINK59's details: not yet)
-    lettered = [s for s in drawn if (s.mm >= TINY_MM or s.name == d.read) and s.name not in same]
+    # (the reaction read here named however short: its reading is what the detail is for)
+    lettered = [s for s in drawn if (every or s.mm >= TINY_MM or s.name == d.read) and s.name not in same]
     # each name nearer its own side than any other (labels.place_owned_line), tried along the side
     # on either hand: LINK50's detail of the stone's corner had "R54" by R05's line and Φ4's
     # leader across G5
