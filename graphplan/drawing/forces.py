@@ -265,7 +265,7 @@ def _on_line(z: complex, u: complex, length: float, links: list[tuple[complex, c
 
 
 OWN_LEAST_MM = 6.0   # an arrow drawn over its own link's line at least this long (its 4 mm head and a shaft)
-OWN_TIP_MM = 3.0     # … its tip (or tail) this far at least from any other point (a joint's ring, S, E)
+OWN_TIP_MM = 3.0     # … its whole length this far at least from any other point (a joint's ring, S, E)
 OWN_GAP_MM = 3.0     # a force drawn on the line of another arrow of its point: this far past that arrow's end
 OWN_BLOCK_MM = 5.0   # the edges of a slider's block this near its point are its own block's (crossed by its arrows)
 
@@ -313,7 +313,11 @@ def _on_own_line(z: complex, u: complex, length: float, links: list[tuple[comple
             ends = [(p, q) for p in (a, b) for q in (t, h) if abs(p - q) <= LANE_MM]
             if _one_arrow(a, b, t, h, LANE_MM) and any(abs(p - z) > 0.5 or abs(q - z) > 0.5 for p, q in ends):
                 return False
-        return all(_to_segment(w, a, b) >= OWN_TIP_MM for w in others)
+        # its head ``HEAD_CLEAR_MM`` from any other point (FRC56_PUSHER's Φ3 up the rocker from S3 ended
+        # 3 mm short of C, where R43 leaves: its name went by R43), its whole length ``OWN_TIP_MM``
+        tip = b if abs(b - z) > abs(a - z) else None
+        return all(_to_segment(w, a, b) >= OWN_TIP_MM for w in others) and \
+            (tip is None or all(abs(w - tip) >= HEAD_CLEAR_MM for w in others))
 
     def at_point(over: bool):
         for ln in sizes:
