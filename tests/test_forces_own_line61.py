@@ -94,6 +94,7 @@ def test_the_inclines_forces_lie_on_their_lines():
     ("FRC56_PUSHER", {}),
     ("LINK59", {}),
     ("COULISSE_REVIEW58", {}),
+    ("FRC61_SLOTTER", {}),                      # frc61's own: a Whitworth slotter, the ram vertical
 ])
 def test_forces_lie_on_their_lines(scene, scales):
     import review_scenes

@@ -299,7 +299,7 @@ def _on_own_line(z: complex, u: complex, length: float, links: list[tuple[comple
                 side = 1.0 if dot(e - z, u) >= 0 else -1.0
                 reach[side] = max(reach[side], abs(dot(e - z, u)))
 
-    def fits(a: complex, b: complex) -> bool:
+    def fits(a: complex, b: complex, head: float = HEAD_CLEAR_MM) -> bool:
         if _crosses(a, b, off) or _crosses(a, b, arrows) or _crosses(a, b, walls):
             return False
         if off and _clearance(a, b, off) < 0.0:
@@ -317,9 +317,9 @@ def _on_own_line(z: complex, u: complex, length: float, links: list[tuple[comple
         # 3 mm short of C, where R43 leaves: its name went by R43), its whole length ``OWN_TIP_MM``
         tip = b if abs(b - z) > abs(a - z) else None
         return all(_to_segment(w, a, b) >= OWN_TIP_MM for w in others) and \
-            (tip is None or all(abs(w - tip) >= HEAD_CLEAR_MM for w in others))
+            (tip is None or all(abs(w - tip) >= head for w in others))
 
-    def at_point(over: bool):
+    def at_point(over: bool, head: float = HEAD_CLEAR_MM):
         for ln in sizes:
             # from the point: leaving it (tail at the point), else arriving (head at the point) —
             # clear of its own link's line first, then over it
@@ -327,7 +327,7 @@ def _on_own_line(z: complex, u: complex, length: float, links: list[tuple[comple
                 side = 1.0 if dot((a + b) / 2 - z, u) > 0 else -1.0
                 if reach[side] > 0.5:
                     continue             # another arrow of the point lies on that half of the line
-                if (_run_along(a, b, mine) > 1.0) == over and fits(a, b):
+                if (_run_along(a, b, mine) > 1.0) == over and fits(a, b, head):
                     return a, b
         return None
 
@@ -344,7 +344,9 @@ def _on_own_line(z: complex, u: complex, length: float, links: list[tuple[comple
         return None
     # clear of its link at its point; past another arrow of the point on its line (rather than down
     # the slider's rod 10° off the guide: a_incline's Φ5); over its own link's line (Φ1 at S1)
-    return at_point(False) or past() or at_point(True)
+    # — its head by another point only where nothing else is free (a crowded crank: FRC61_SLOTTER's
+    # Φ1 at S1 between A's stone and the coulisse's S3), ``OWN_TIP_MM`` from it
+    return at_point(False) or past() or at_point(True) or at_point(True, OWN_TIP_MM)
 
 
 def _run_along(a: complex, b: complex, links: list[tuple[complex, complex]], tol: float = 0.6) -> float:
