@@ -65,13 +65,15 @@ def _check(fp, rec, gp) -> list[str]:
     return bad
 
 
-def _all(scene: str, **scales) -> list[str]:
+def _all(scene: str, groups: bool = True, scheme: bool = True, **scales) -> list[str]:
     from graphplan.drawing.forces import group_record, mechanism_record
     fp = scene_force_plans(scene, **scales)
     bad = []
-    for gp in fp.groups:
+    for gp in fp.groups if groups else ():
         for lang in ("uk",):
             bad += _check(fp, group_record(fp, gp, lang), gp)
+    if not scheme:
+        return bad
     # the scheme: every load at its point (its reactions are the groups')
     scheme = mechanism_record(fp)
     whole = type(fp.groups[0])("0", "mechanism", (), [f for gp in fp.groups for f in gp.forces if f.kind == "load"],
@@ -86,6 +88,12 @@ def test_the_inclines_forces_lie_on_their_lines():
     assert _all(FRC60B_INCLINE) == []
 
 
+KNOT = ("the slotter's scheme at 1:4 (its A1 sheet's scale): the 30-mm crank O1A and the coulisse OA cross at "
+        "12° between S1 and S3 5 mm apart, Φ3 already drawn along the coulisse's line; no place on Φ1's line "
+        "from S1 (leaving or reaching it, 6 mm at least, over the crank) reads apart from Φ3 or keeps 3 mm "
+        "off S3 — Φ1 falls back to the lane beside the crank (frc61)")
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("scene,scales", [
     ("KIN60B_CRUSHER", {}),                                    # the jaw's G2 and P_E along the near-vertical jaw
@@ -94,7 +102,8 @@ def test_the_inclines_forces_lie_on_their_lines():
     ("FRC56_PUSHER", {}),
     ("LINK59", {}),
     ("COULISSE_REVIEW58", {}),
-    ("FRC61_SLOTTER", {}),                      # frc61's own: a Whitworth slotter, the ram vertical
+    ("FRC61_SLOTTER", {"scheme": False}),       # frc61's own: a Whitworth slotter, the ram vertical
+    pytest.param("FRC61_SLOTTER", {"groups": False}, marks=pytest.mark.xfail(strict=True, reason=KNOT)),
 ])
 def test_forces_lie_on_their_lines(scene, scales):
     import review_scenes

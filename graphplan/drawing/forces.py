@@ -344,8 +344,7 @@ def _on_own_line(z: complex, u: complex, length: float, links: list[tuple[comple
         return None
     # clear of its link at its point; past another arrow of the point on its line (rather than down
     # the slider's rod 10° off the guide: a_incline's Φ5); over its own link's line (Φ1 at S1)
-    # — its head by another point only where nothing else is free (a crowded crank: FRC61_SLOTTER's
-    # Φ1 at S1 between A's stone and the coulisse's S3), ``OWN_TIP_MM`` from it
+    # — its head by another point only where nothing else is free, ``OWN_TIP_MM`` from it
     return at_point(False) or past() or at_point(True) or at_point(True, OWN_TIP_MM)
 
 
