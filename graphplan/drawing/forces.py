@@ -345,7 +345,7 @@ def _on_own_line(z: complex, u: complex, length: float, links: list[tuple[comple
     # clear of its link at its point; past another arrow of the point on its line (rather than down
     # the slider's rod 10° off the guide: a_incline's Φ5); over its own link's line (Φ1 at S1)
     # — its head by another point only where nothing else is free, ``OWN_TIP_MM`` from it
-    return at_point(False) or past() or at_point(True) or at_point(True, OWN_TIP_MM)
+    return at_point(False) or at_point(True) or past() or at_point(True, OWN_TIP_MM)
 
 
 def _run_along(a: complex, b: complex, links: list[tuple[complex, complex]], tol: float = 0.6) -> float:
