@@ -287,6 +287,7 @@ def _on_own_line(z: complex, u: complex, length: float, links: list[tuple[comple
     mine = [(p, q) for p, q in links if _on_segment(z, p, q)]          # the point's own links' lines
     off = [(p, q) for p, q in links if not _on_segment(z, p, q)]
     walls = [(p, q) for p, q in outlines if _to_segment(z, p, q) > OWN_BLOCK_MM]
+    block = len(walls) < len(outlines) and any(_to_segment(z, p, q) <= OWN_BLOCK_MM for p, q in outlines)
     others = [w for w in points if abs(w - z) > 0.5]
     sizes = [length] + [k * length for k in (0.8, 0.65, 0.5) if k * length >= OWN_LEAST_MM]
     if length > OWN_LEAST_MM:
@@ -320,15 +321,19 @@ def _on_own_line(z: complex, u: complex, length: float, links: list[tuple[comple
             (tip is None or all(abs(w - tip) >= head for w in others))
 
     def at_point(over: bool, head: float = HEAD_CLEAR_MM):
-        for ln in sizes:
-            # from the point: leaving it (tail at the point), else arriving (head at the point) —
-            # clear of its own link's line first, then over it
-            for a, b in ((z, z + ln * u), (z - ln * u, z)):
-                side = 1.0 if dot((a + b) / 2 - z, u) > 0 else -1.0
-                if reach[side] > 0.5:
-                    continue             # another arrow of the point lies on that half of the line
-                if (_run_along(a, b, mine) > 1.0) == over and fits(a, b, head):
-                    return a, b
+        # from the point: leaving it (tail at the point), else arriving (head at the point) — clear of
+        # its own link's line first, then over it; over it, leaving at any length first (its head out
+        # along the bar, clear of the joint, SIXBAR6's Φ1 at S1: arriving from O1, its name went 15 mm out)
+        tries = [(z, z + ln * u) for ln in sizes] + [(z - ln * u, z) for ln in sizes] if over else \
+            [c for ln in sizes for c in ((z, z + ln * u), (z - ln * u, z))]
+        for a, b in tries:
+            side = 1.0 if dot((a + b) / 2 - z, u) > 0 else -1.0
+            if reach[side] > 0.5:
+                continue                 # another arrow of the point lies on that half of the line
+            if over and block and abs(b - z) < 0.5:
+                continue                 # its head over the guide into the slider's block: hidden there
+            if (_run_along(a, b, mine) > 1.0) == over and fits(a, b, head):
+                return a, b
         return None
 
     def past():
