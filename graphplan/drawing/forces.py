@@ -323,15 +323,15 @@ def _on_own_line(z: complex, u: complex, length: float, links: list[tuple[comple
     def at_point(over: bool, head: float = HEAD_CLEAR_MM):
         # from the point: leaving it (tail at the point), else arriving (head at the point) — clear of
         # its own link's line first, then over it; over it, leaving at any length first (its head out
-        # along the bar, clear of the joint, SIXBAR6's Φ1 at S1: arriving from O1, its name went 15 mm out)
-        tries = [(z, z + ln * u) for ln in sizes] + [(z - ln * u, z) for ln in sizes] if over else \
+        # along the bar, clear of the joint, SIXBAR6's Φ1 at S1: arriving from O1, its name went 15 mm
+        # out) — but at a slider's block each length either way (FORCE_COUPLER51's P_F left F down the
+        # rod 8° off it, its name nearer Φ4; arriving, its head lies in the block: left for the next stop)
+        tries = [(z, z + ln * u) for ln in sizes] + [(z - ln * u, z) for ln in sizes] if over and not block else \
             [c for ln in sizes for c in ((z, z + ln * u), (z - ln * u, z))]
         for a, b in tries:
             side = 1.0 if dot((a + b) / 2 - z, u) > 0 else -1.0
             if reach[side] > 0.5:
                 continue                 # another arrow of the point lies on that half of the line
-            if over and block and abs(b - z) < 0.5:
-                continue                 # its head over the guide into the slider's block: hidden there
             if (_run_along(a, b, mine) > 1.0) == over and fits(a, b, head):
                 return a, b
         return None
