@@ -9441,3 +9441,87 @@ count = 12
 start = "working"
 output = "O2B"
 '''
+
+
+
+# frc61 (stop 61): frc61's own forces check — a Whitworth rotating-coulisse drive of a slotting machine, the ram on a
+# VERTICAL guide through the coulisse's pivot, the crank clockwise, the cut on the downward stroke.
+FRC61_SLOTTER = '''# Stop 61 (frc61's own check): a Whitworth quick-return drive of a SLOTTING machine — the crank O1A (longer than
+# O1O) turns the coulisse OB fully round O through the stone 2; the rod BC drives the ram C on a VERTICAL guide
+# through O (I(0-1) -> II(2-3) RPR -> II(4-5) RRP); the crank CLOCKWISE; the cutting force on the ram on its
+# downward (working) stroke; the rod's and the coulisse's masses by length.
+title = "Кулісний механізм з обертовою кулісою (Вітворта) довбального верстата"
+title_en = "Whitworth rotating-coulisse mechanism of a slotting machine"
+designation = "ТММ.КП.61.100"
+
+[sheet]
+student = "Перевірка Ф. Ф."
+teacher = "Викладач В. В."
+group = "МБ-61"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+O1 = [0.06, 0]
+
+[frame.guides]
+ram = { through = [0, 0], angle_deg = 90, title_uk = "повзуна", title_en = "of the ram" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.12
+rpm = 75
+direction = "cw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "2"
+number = 2
+joints = ["A"]
+slides_on = "OB"
+mass = 2
+
+[[link]]
+name = "OB"
+number = 3
+joints = ["O", "B"]
+length = 0.2
+points = { S3 = 0.5 }
+
+[[link]]
+name = "BC"
+number = 4
+joints = ["B", "C"]
+length = 0.45
+points = { S4 = 0.5 }
+
+[[link]]
+name = "C"
+number = 5
+joints = ["C"]
+slides_on = "ram"
+mass = 25
+
+[branch]
+A = 1
+C = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 100
+working_stroke = "to_min"
+
+[loads]
+g = 9.81
+mass_per_length = 25
+inertia_factor = 0.1
+
+[[force]]
+point = "C"
+magnitude = 1800
+stroke = "working"
+'''

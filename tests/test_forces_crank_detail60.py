@@ -52,7 +52,7 @@ def test_the_detail_names_every_force_and_the_caption_bounds_the_short_ones(cran
     for lang, rec in recs.items():
         assert "mu_F detail" in rec.scales
         names = {q.text for q in rec.items if q.kind == "text" and q.step.endswith("detail")}
-        assert {force_symbol(n, lang) for n in ("G1", "R21", "R01")} <= names, (lang, names)   # Φ1: not yet (report)
+        assert {force_symbol(n, lang) for n in ("G1", "Φ1", "R21", "R01")} <= names, (lang, names)   # frc61: Φ1 too
         caption = next(q.text for q in rec.items if q.kind == "text" and q.text.startswith("μ_F = "))
         bound = re.search(r"< (\d+)", caption)
         assert bound is not None and force_symbol("Φ1", lang) in caption

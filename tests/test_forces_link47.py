@@ -255,8 +255,14 @@ def test_the_scheme_parts_g5_and_phi5_and_keeps_m5s_arc_off_them(lever):
     rec = mechanism_record(fp, "uk")
     vec = {q.text: [complex(*p) for p in q.points] for q in rec.items if q.kind == "vector" and q.text in ("G5", "Φ5")}
     g, f = vec["G5"], vec["Φ5"]
-    assert min(_to_segment(z, *g) for z in (f[0], f[1], 0.5 * (f[0] + f[1]))) >= 4.0, (g, f)
-    s5 = g[0] if abs(g[0] - f[0]) < abs(g[1] - f[0]) else g[1]
+    # stop 61 (review 60 #3: every force ON its line through its point): the two drawn one after the
+    # other along their common line through S5 (Φ5 reaching S5, G5 leaving it) — their heads at least
+    # 4 mm apart, neither shaft running over the other (they were set 4 mm apart in lanes, off S5)
+    assert abs(g[1] - f[1]) >= 4.0, (g, f)
+    assert min(_to_segment(z, *g) for z in (f[0], 0.5 * (f[0] + f[1]))) >= 4.0, (g, f)
+    assert min(_to_segment(z, *f) for z in (g[1], 0.5 * (g[0] + g[1]))) >= 4.0, (g, f)
+    s5 = next(complex(*q.points[0]) for q in rec.items if q.kind == "point"
+              and min(abs(complex(*q.points[0]) - e) for e in (*g, *f)) < 0.5)
     arcs = [q for q in rec.items if q.kind == "arc" and abs(complex(*q.points[0]) - s5) < 0.5]
     assert len(arcs) == 1
     q = arcs[0]

@@ -42,9 +42,20 @@ def test_no_two_forces_on_one_line_read_as_one_arrow(text):
     for rec in recs:
         vs = _vectors(rec)
         assert vs, rec.title
+        points = [complex(*q.points[0]) for q in rec.items if q.kind == "point"]
         for i, (n1, a, b) in enumerate(vs):
             for n2, c, d in vs[i + 1:]:
-                assert not _read_as_one(a, b, c, d), (rec.title, n1, n2, a, b, c, d)
+                # stop 61 (review 60 #3: every force ON its line through its point): two collinear forces
+                # may leave (or reach) their point on opposite sides of it — R03 up and G3 down from the
+                # slider's B, the block and the joint drawn between them — but never overlap or meet
+                # anywhere else
+                at = [p for p in (a, b) for q in (c, d) if abs(p - q) <= 0.5]
+                apart = False
+                if len(at) == 1 and any(abs(at[0] - w) < 0.5 for w in points):
+                    far1 = b if abs(a - at[0]) < 0.5 else a
+                    far2 = d if abs(c - at[0]) < 0.5 else c
+                    apart = ((far1 - at[0]) * (far2 - at[0]).conjugate()).real < 0
+                assert apart or not _read_as_one(a, b, c, d), (rec.title, n1, n2, a, b, c, d)
     # the pair at B on the review's compressor: both drawn, parallel, in opposite senses
     if text is REV11_A:
         for rec in recs[:2]:
@@ -52,7 +63,16 @@ def test_no_two_forces_on_one_line_read_as_one_arrow(text):
             (a1, b1), (a2, b2) = arrows["Φ3"], arrows["P_B"]
             assert abs((b1 - a1).imag) < 1e-6 and abs((b2 - a2).imag) < 1e-6
             assert (b1 - a1).real < 0 < (b2 - a2).real
-            assert abs(a1.imag - a2.imag) >= 2.0       # a lane apart
+            # stop 61: both ON the guide's line through B (they were a lane apart, off it: review 60 #3),
+            # on either side of B or one after the other along it 2 mm apart — never over each other
+            b = next(complex(*q.points[0]) for q in rec.items if q.kind == "point" and (q.text or "") == ""
+                     and abs(complex(*q.points[0]).imag - a2.imag) < 0.5 and abs(complex(*q.points[0]) - a2) < 0.5)
+            assert abs(a1.imag - b.imag) < 1e-6 and abs(a2.imag - b.imag) < 1e-6
+            lo1, hi1 = sorted((a1.real, b1.real))
+            lo2, hi2 = sorted((a2.real, b2.real))
+            gap = max(lo1, lo2) - min(hi1, hi2)
+            assert gap >= 2.0 or (abs(gap) < 1e-6 and min(abs(e - b) for e in (a1, b1)) < 0.5
+                                  and min(abs(e - b) for e in (a2, b2)) < 0.5), (a1, b1, a2, b2, b)
 
 
 def test_the_compressors_hodographs_take_the_size_their_drawings_fit():

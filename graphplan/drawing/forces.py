@@ -264,6 +264,95 @@ def _on_line(z: complex, u: complex, length: float, links: list[tuple[complex, c
     return None
 
 
+OWN_LEAST_MM = 6.0   # an arrow drawn over its own link's line at least this long (its 4 mm head and a shaft)
+OWN_TIP_MM = 3.0     # … its whole length this far at least from any other point (a joint's ring, S, E)
+OWN_GAP_MM = 3.0     # a force drawn on the line of another arrow of its point: this far past that arrow's end
+OWN_BLOCK_MM = 5.0   # the edges of a slider's block this near its point are its own block's (crossed by its arrows)
+
+
+def _on_own_line(z: complex, u: complex, length: float, links: list[tuple[complex, complex]],
+                 drawn: list[tuple[complex, complex, complex]], outlines: list[tuple[complex, complex]] = (),
+                 points: list[complex] = ()) -> tuple[complex, complex] | None:
+    """A force lying on a link's line through its point (Φ1 along the crank at S1, the jaw's G2 at S2 6°
+    off it) or on the line of an arrow already drawn at its point (Φ5 and P_D at the slider's D) drawn
+    ON its line of action through the point, as the textbook draws it (review 60 #3: set a lane aside,
+    parallel, it contradicted the arm h drawn to the true line): first from the point, over its link's
+    line if need be — leaving it along ``u``, else arriving at it — at its length, else shorter down to
+    ``OWN_LEAST_MM``, its tip ``OWN_TIP_MM`` clear of every other point (a joint's ring at the link's
+    end); then, where another arrow of the point takes the line, one after the other along the line,
+    ``OWN_GAP_MM`` past that arrow's far end. Every place crosses no other link, no arrow and no block
+    but the point's own, keeps ``CLEAR_MM`` from the links not through the point, and reads as no
+    other arrow (``_one_arrow``, ``_one_shaft``) — or None where none does."""
+    arrows = [(t, h) for _, t, h in drawn]
+    mine = [(p, q) for p, q in links if _on_segment(z, p, q)]          # the point's own links' lines
+    off = [(p, q) for p, q in links if not _on_segment(z, p, q)]
+    walls = [(p, q) for p, q in outlines if _to_segment(z, p, q) > OWN_BLOCK_MM]
+    block = len(walls) < len(outlines) and any(_to_segment(z, p, q) <= OWN_BLOCK_MM for p, q in outlines)
+    others = [w for w in points if abs(w - z) > 0.5]
+    sizes = [length] + [k * length for k in (0.8, 0.65, 0.5) if k * length >= OWN_LEAST_MM]
+    if length > OWN_LEAST_MM:
+        sizes.append(OWN_LEAST_MM)
+    # how far out along either half of the line the arrows of the point already lying on it reach
+    reach = {1.0: 0.0, -1.0: 0.0}
+    for w, t, h in drawn:
+        if abs(w - z) < 0.5 and abs(((t - z).conjugate() * u).imag) < 0.5 and abs(((h - z).conjugate() * u).imag) < 0.5:
+            for e in (t, h):
+                side = 1.0 if dot(e - z, u) >= 0 else -1.0
+                reach[side] = max(reach[side], abs(dot(e - z, u)))
+
+    def fits(a: complex, b: complex, head: float = HEAD_CLEAR_MM) -> bool:
+        if _crosses(a, b, off) or _crosses(a, b, arrows) or _crosses(a, b, walls):
+            return False
+        if off and _clearance(a, b, off) < 0.0:
+            return False
+        for t, h in arrows:
+            if _one_shaft(a, b, t, h) or _overlap(a, b, t, h, LANE_MM):
+                return False
+            # end to end on one line reads as one double-headed arrow — but at the point itself, its
+            # dot between them, two forces leaving it (or arriving) on either side (G3 down from S3,
+            # Φ3 up) read as the textbook's two
+            ends = [(p, q) for p in (a, b) for q in (t, h) if abs(p - q) <= LANE_MM]
+            if _one_arrow(a, b, t, h, LANE_MM) and any(abs(p - z) > 0.5 or abs(q - z) > 0.5 for p, q in ends):
+                return False
+        # its head ``HEAD_CLEAR_MM`` from any other point (FRC56_PUSHER's Φ3 up the rocker from S3 ended
+        # 3 mm short of C, where R43 leaves: its name went by R43), its whole length ``OWN_TIP_MM``
+        tip = b if abs(b - z) > abs(a - z) else None
+        return all(_to_segment(w, a, b) >= OWN_TIP_MM for w in others) and \
+            (tip is None or all(abs(w - tip) >= head for w in others))
+
+    def at_point(over: bool, head: float = HEAD_CLEAR_MM):
+        # from the point: leaving it (tail at the point), else arriving (head at the point) — clear of
+        # its own link's line first, then over it; over it, leaving at any length first (its head out
+        # along the bar, clear of the joint, SIXBAR6's Φ1 at S1: arriving from O1, its name went 15 mm
+        # out) — but at a slider's block each length either way (FORCE_COUPLER51's P_F left F down the
+        # rod 8° off it, its name nearer Φ4; arriving, its head lies in the block: left for the next stop)
+        tries = [(z, z + ln * u) for ln in sizes] + [(z - ln * u, z) for ln in sizes] if over and not block else \
+            [c for ln in sizes for c in ((z, z + ln * u), (z - ln * u, z))]
+        for a, b in tries:
+            side = 1.0 if dot((a + b) / 2 - z, u) > 0 else -1.0
+            if reach[side] > 0.5:
+                continue                 # another arrow of the point lies on that half of the line
+            if (_run_along(a, b, mine) > 1.0) == over and fits(a, b, head):
+                return a, b
+        return None
+
+    def past():
+        for ln in sizes:
+            # past the arrow of the point on its line: one after the other (P_D leaving D, Φ5 beyond it)
+            for side in (1.0, -1.0):
+                if reach[side] <= 0.5:
+                    continue
+                s = reach[side] + OWN_GAP_MM
+                a, b = (z + s * u, z + (s + ln) * u) if side > 0 else (z - (s + ln) * u, z - s * u)
+                if fits(a, b) and not any(_one_arrow(a, b, t, h, OWN_GAP_MM - 0.5) for t, h in arrows):
+                    return a, b
+        return None
+    # clear of its link at its point; past another arrow of the point on its line (rather than down
+    # the slider's rod 10° off the guide: a_incline's Φ5); over its own link's line (Φ1 at S1)
+    # — its head by another point only where nothing else is free, ``OWN_TIP_MM`` from it
+    return at_point(False) or at_point(True) or past() or at_point(True, OWN_TIP_MM)
+
+
 def _run_along(a: complex, b: complex, links: list[tuple[complex, complex]], tol: float = 0.6) -> float:
     """How much (mm) of the arrow a→b lies on a drawn line — within ``tol`` mm of a segment of
     ``links`` that runs within ``ALONG_DEG`` of it (Φ5 at the slider's joint along the rod CD, P_D
@@ -787,10 +876,34 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                     a, b = _head_clear(z, u, a, b, drawn, drawn_links, busy)
                 drawn.append((z, a, b))
                 return a, b
-            # only where every place on the line is hidden, beside the link in a lane, its own
-            # length (G2, G3 on the coulisse's rocker ran 70 mm down it to O), the arm ending on
-            # its line of action drawn thin through the point (``lanes``)
             a, b = z, z + length * u
+        if inside or over:
+            # on its line through its point, over its link's line if need be, or one after the
+            # other along the line with the arrow of its point lying there (``_on_own_line``):
+            # review 60 #3 — Φ1 set a lane aside from the crank, Φ5 beside P_D, the jaw's G2 and
+            # P_E beside the jaw while their arms h ended on the true lines
+            own = _on_own_line(z, u, length, drawn_links + guide_lines, drawn, blocks,
+                               [w for w, _ in busy] + [w for w, _ in names])
+            if own is not None:
+                a, b = own
+                if _heads_meet(z, b, drawn):
+                    a, b = _head_clear(z, u, a, b, drawn, drawn_links, busy)
+                drawn.append((z, a, b))
+                return a, b
+            if inside and name not in armed:
+                # slid along its line past the link, a thin stroke from the point to it
+                on_line = _on_line(z, u, length, drawn_links + guide_lines, drawn, blocks,
+                                   [w for w, _ in busy] + [w for w, _ in names])
+                if on_line is not None:
+                    a, b = on_line
+                    slid.add(name)
+                    if _heads_meet(z, b, drawn):
+                        a, b = _head_clear(z, u, a, b, drawn, drawn_links, busy)
+                    drawn.append((z, a, b))
+                    return a, b
+        # only where no place on the line is free, beside the link in a lane, its own length (G2,
+        # G3 on the coulisse's rocker ran 70 mm down it to O), the arm ending on its line of action
+        # drawn thin through the point (``lanes``)
         if inside or (over and name not in armed):
             others = [v for w, v in busy if abs(w - z) < 0.5 and abs((v.conjugate() * u).imag) > 1e-6]
             others += [_unit(e - z) for s, e in drawn_links for e in (s, e)
@@ -1014,8 +1127,13 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                 taken.append(omega_mid if omega_mid is not None else cmath.phase(z - pin))
             key = next((w for w in arcs if abs(w - z) < 0.5), z)     # M^Φ3 and M3 on one link: two arcs
             taken += [cmath.phase(m_ - z) for m_ in arcs.get(key, [])]     # apart, the second wider
-            mid = _moment_arc(rec, z, f.couple, _free_direction(taken or [-math.pi / 2]), step,
-                              r=5.0 + 4.0 * len(arcs.get(key, [])), span=110.0, name="")
+            away = _free_direction(taken or [-math.pi / 2])
+            # as wide as the free sector lets it, 15° clear of the lines bounding it (G2 drawn down
+            # from S2 on its own line beside the jaw left the jaw's couple 90° between Φ2 and the
+            # jaw: a 110° arc's head lay on the jaw), from 60° to 110°
+            room = 2.0 * min((abs((away - t + math.pi) % (2 * math.pi) - math.pi) for t in taken), default=math.pi)
+            mid = _moment_arc(rec, z, f.couple, away, step, r=5.0 + 4.0 * len(arcs.get(key, [])),
+                              span=min(110.0, max(60.0, math.degrees(room) - 30.0)), name="")
             arcs.setdefault(key, []).append(mid)
             labels.append((mid, f.name, mid - z))
             clear[z] = z - mid
@@ -1680,8 +1798,12 @@ def _polygon_detail(rec: Record, d: PlanDetail, sides: list, same: dict[str, str
     tries = [(mu, False) for mu in d.choices] + ([(d.choices[0], True)] if beside else [])
     if row:                 # a row begun under the plan: the next detail in it (I, II, III in order)
         tries = [(mu, True) for mu in d.choices]
-    for mu, out in tries:
-        det = _detail_drawing(d, mu, sides, same, mu_F, lang, step, name)
+    # every side it draws named first (review 60 #2: the crank's Φ1, 2.5 mm in the detail, drawn
+    # unnamed), at every μF_I and place; where no such detail has room, the sides under ``TINY_MM``
+    # unnamed as before (named so, FRC56_PUSHER's I and II and LINK59's I–III found no room at all)
+    tries = [(mu, out, True) for mu, out in tries] + [(mu, out, False) for mu, out in tries]
+    for mu, out, every in tries:
+        det = _detail_drawing(d, mu, sides, same, mu_F, lang, step, name, every=every)
         if out and row is not None:         # under the plan, in a row from its left
             if not row:
                 row[:] = [rb[0], rb[1] - DETAIL_GAP]
@@ -1716,9 +1838,10 @@ DETAIL_MID_MM = 8.0     # a detail's side shorter than this is named at its midd
 
 
 def _detail_drawing(d: PlanDetail, mu: float, sides: list, same: dict[str, str], mu_F: float, lang: str,
-                    step: str, name: str = "I") -> Record:
+                    step: str, name: str = "I", every: bool = False) -> Record:
     """The detail at μF_I = ``mu``: every side through the window, enlarged μF/μF_I times about its
-    middle (a side's head out of the window drawn as its line), named; its name over it."""
+    middle (a side's head out of the window drawn as its line), named (``every``: however short
+    there, else from ``TINY_MM``); its name over it."""
     from graphplan.graphic.forceplans import Side
     k = mu_F / mu
     x0, y0, x1, y1 = d.box
@@ -1752,9 +1875,8 @@ def _detail_drawing(d: PlanDetail, mu: float, sides: list, same: dict[str, str],
         drawn.append(Side(s.name, A, B, s.role))
     if x0 <= 0.0 <= x1 and y0 <= 0.0 <= y1:
         det.point(_pt(-c * k), layer="vectors", step=dstep)
-    # (the reaction read here named however short: its reading is what the detail is for; naming every
-    # short side, review 60 #2's Φ1 at 2.5 mm, lost FRC56_PUSHER's and LINK59's details: not yet)
-    lettered = [s for s in drawn if (s.mm >= TINY_MM or s.name == d.read) and s.name not in same]
+    # (the reaction read here named however short: its reading is what the detail is for)
+    lettered = [s for s in drawn if (every or s.mm >= TINY_MM or s.name == d.read) and s.name not in same]
     # each name nearer its own side than any other (labels.place_owned_line), tried along the side
     # on either hand: LINK50's detail of the stone's corner had "R54" by R05's line and Φ4's
     # leader across G5
