@@ -9525,3 +9525,74 @@ point = "C"
 magnitude = 1800
 stroke = "working"
 '''
+
+
+# dyn61b (stop 61): review 61's scene b (in English), a hopper swing-gate's crank-rocker drive — its A3 dynamics
+# set put Tables 1–3 and ω(φ) on its first sheet, the construction after them (review 61 finding 4)
+DYN61B_GATE = '''# review61 (b): in ENGLISH, a crank-rocker four-bar of a hopper's swing-gate drive: crank O1A (0.08 m, CCW,
+# 80 rpm), coupler AB (0.30 m), rocker O2B (0.20 m) carrying the gate's shaft; a resistance MOMENT of 150 N·m
+# on the rocker against its turn over the working swing; masses by length 30 kg/m; [dynamics] 1000 rpm, δ = 0.04.
+title = "Шарнірний чотириланковий механізм привода засувки бункера"
+title_en = "Crank-rocker drive of a hopper swing gate"
+designation = "TMM.KP.61.720"
+lang = "en"
+
+[sheet]
+student = "Reviewer R. R."
+teacher = "Teacher T. T."
+group = "MB-61"
+organisation = "NULES of Ukraine"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.32, -0.08]
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.08
+rpm = 80
+direction = "ccw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.30
+points = { S2 = 0.5 }
+
+[[link]]
+name = "O2B"
+number = 3
+joints = ["O2", "B"]
+length = 0.20
+points = { S3 = 0.5 }
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [4]
+force_phi_deg = 150
+output = "O2B"
+
+[loads]
+g = 9.81
+mass_per_length = 30
+inertia_factor = 0.1
+
+[[moment]]
+link = 3
+magnitude = 150
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+efficiency = 0.9
+synchronous_rpm = 1000
+'''

@@ -1209,15 +1209,20 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
     # the search aims at the |kl| the A1 sheet draws (ΔT at its own finer μ_T, or its larger diagram:
     # ``a1_drawn_kl``), the one the set's note compares with — stop 60's note said 113 mm where the
     # search had aimed at LINK53's classical 74; the order of the work is left (the tables first) only
-    # where it does not read even the classical composition's |kl| (the slotter's A2 set aimed at the
-    # larger diagram had lost its order of the work for it)
+    # where it does not read the flywheel to ``ORDERED_READ`` by the ruler (review 61 #4; before, where
+    # it did not read the classical composition's |kl|)
     target = None if classical is None else max(classical, a1_drawn_kl(st, dyn, args))
     # the moments on the first sheet (the set in the order of the work) where that reads the flywheel
-    # no worse than the A1 sheet; else at the scales a later sheet holds (the tables then go first)
+    # to ``ORDERED_READ``; else at the scales a later sheet holds (the tables then go first)
     first_fits = lambda L_, s_: fits(L_, s_, True)      # noqa: E731
     ordered = _set_scales(sizes, first_fits, kl, target, (L, size))
-    if target is not None and classical - 1e-9 <= kl(*ordered) < target - 1e-9:
-        # in the order of the work the classical |kl| is read: the drawn one sought in that order alone
+    in_order = first_fits(*ordered) and kl(*ordered) >= args.precision / ORDERED_READ - 1e-9
+    if target is not None and in_order and kl(*ordered) < target - 1e-9:
+        # in the order of the work the flywheel is read (to ``ORDERED_READ`` by the ruler): the A1
+        # sheet's |kl| sought in that order alone, else the note says how far short — a set is read
+        # from its form 1 on, the construction before the results (review 61 #4: b_gate's A3 set
+        # put Tables 1–3 and ω(φ) on its first sheet, M*(φ) and the band after them, for the
+        # classical |kl| the order of the work fell short of)
         L, size, why = _reach(sizes, first_fits, kl, target, args.precision, f, ordered)
         if why is not None:
             if len(_SHORT) >= 64:
@@ -1233,8 +1238,8 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
             L, size, why = _reach(sizes, fits, kl, target, args.precision, f, (L, size))
             out = why is not None
             if out and target > classical + 1e-9:
-                # the drawn |kl| out of reach: the classical one where a later sheet reads it (the
-                # compressor's A3 set: 69.5 mm, tables first, rather than 51 in the order of the work)
+                # the drawn |kl| out of reach: the classical one where a later sheet reads it (only
+                # where the order of the work reads less than ``ORDERED_READ``: see ``in_order``)
                 Lc, sc = _set_scales(sizes, fits, kl, classical, (L, size))
                 if kl(Lc, sc) < classical - 1e-9:
                     Lc, sc, gone = _reach(sizes, fits, kl, classical, args.precision, f, (Lc, sc))
