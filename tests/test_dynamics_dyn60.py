@@ -186,7 +186,7 @@ def test_a_sets_note_gives_the_kl_the_a1_sheet_draws():
     """LINK53's A3 set reads |kl| = 60.5 mm; its note compared it with the set search's target, 74 mm — the
     A1 sheet's |kl| at the classical composition's scales — while the A1 sheet draws ΔT at its own finer
     μ_T = 1 J/mm and letters |kl| = 113 mm. The note's «(Y mm on the A1 sheet)» is the A1 sheet's own
-    lettering, and what the note says of it holds: no scale that fits an A3 sheet reads |kl| ≥ Y."""
+    lettering, and what the note says of it holds: no scale with the moments on the first sheet reads |kl| ≥ Y."""
     import re
 
     from conftest import scene_sheet
@@ -197,8 +197,10 @@ def test_a_sets_note_gives_the_kl_the_a1_sheet_draws():
     words = [it.text for page in sheet.pages for p in page.placed if p.name == "notes"
              for it in p.record.items if it.kind == "text" and it.text]
     text = " ".join(" ".join(words).split())
-    said = re.search(r"\|kl\| = ([\d.]+) mm \(([\d.]+) mm on the A1 sheet\): no scale \(L = (\d+)…(\d+) mm\) that "
-                     r"fits an A3 sheet gives \|kl\| ≥ ([\d.]+) mm", text)
+    # the set keeps the order of the work (the moments on its first sheet, stop 61): the note says no
+    # scale reads the A1 sheet's |kl| in that order
+    said = re.search(r"\|kl\| = ([\d.]+) mm \(([\d.]+) mm on the A1 sheet\): in the order of the work \(.*?first "
+                     r"sheet\) no scale \(L = (\d+)…(\d+) mm\) of an A3 sheet gives \|kl\| ≥ ([\d.]+) mm", text)
     assert said, text
     kl, a1, low, top, claim = (float(g) for g in said.groups())
     assert (kl, a1, claim) == (on_a3, on_a1, on_a1) and on_a3 < on_a1

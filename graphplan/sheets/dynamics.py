@@ -74,7 +74,9 @@ WORDS = {
            "short": "|kl| = {kl} мм (на аркуші A1 — {a1} мм): ",
            "short_tall": "з |kl| = {a1} мм діаграма енергія–маса з I^*_м(φ) під нею мала б ≥ {need} мм заввишки, "
                          "а аркуш {fmt} вміщує {room} мм",
-           "short_none": "жоден масштаб (L = {low}…{top} мм), що вміщується на аркуші {fmt}, не дає |kl| ≥ {a1} мм"},
+           "short_none": "жоден масштаб (L = {low}…{top} мм), що вміщується на аркуші {fmt}, не дає |kl| ≥ {a1} мм",
+           "short_first": "у порядку роботи (M^*(φ) на першому аркуші) жоден масштаб (L = {low}…{top} мм) аркуша {fmt} "
+                          "не дає |kl| ≥ {a1} мм"},
     "en": {"subtitle": "Dynamic analysis", "moments": "Reduced moments M^*_c(φ), M^*_d and the work A_c(φ), A_d(φ) "
            "(graphical integration by chords)", "energy": "Change of kinetic energy ΔT(φ) = A_d − A_c",
            "inertia": "Reduced moment of inertia of the mechanism I^*_m(φ)",
@@ -105,7 +107,9 @@ WORDS = {
            "short": "|kl| = {kl} mm ({a1} mm on the A1 sheet): ",
            "short_tall": "at |kl| = {a1} mm the energy–mass diagram with I^*_m(φ) under it would be ≥ {need} mm tall, "
                          "an {fmt} sheet holds {room} mm",
-           "short_none": "no scale (L = {low}…{top} mm) that fits an {fmt} sheet gives |kl| ≥ {a1} mm"},
+           "short_none": "no scale (L = {low}…{top} mm) that fits an {fmt} sheet gives |kl| ≥ {a1} mm",
+           "short_first": "in the order of the work (M^*(φ) on the first sheet) no scale (L = {low}…{top} mm) of an "
+                          "{fmt} sheet gives |kl| ≥ {a1} mm"},
 }
 
 
@@ -1224,6 +1228,7 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
         # put Tables 1–3 and ω(φ) on its first sheet, M*(φ) and the band after them, for the
         # classical |kl| the order of the work fell short of)
         L, size, why = _reach(sizes, first_fits, kl, target, args.precision, f, ordered)
+        why = _on_first(why)
         if why is not None:
             if len(_SHORT) >= 64:
                 _SHORT.pop(next(iter(_SHORT)))
@@ -1251,8 +1256,8 @@ def _construction(st: Study, dyn, f: Form, args, scales_only: bool = False, upwa
             if out and kl(*ordered) >= args.precision / ORDERED_READ - 1e-9:
                 # the A1 sheet's |kl| out of reach either way: the set in the order of the work (review 7
                 # #12: its first sheet the tables), the flywheel still read to ORDERED_READ by the ruler
-                (L, size), why = ordered, _reach(sizes, lambda L_, s_: fits(L_, s_, True), kl, target,
-                                                 args.precision, f, ordered)[2]
+                (L, size), why = ordered, _on_first(_reach(sizes, lambda L_, s_: fits(L_, s_, True), kl, target,
+                                                           args.precision, f, ordered)[2])
             if why is not None:
                 if len(_SHORT) >= 64:
                     _SHORT.pop(next(iter(_SHORT)))
@@ -1391,12 +1396,21 @@ def _classical_scales(st: Study, dyn, f: Form, args) -> tuple[float, float]:
     return _SCALES[key]
 
 
+def _on_first(why: tuple | None) -> tuple | None:
+    """``_reach``'s "none" where the search kept the moments on the first sheet (the order of the work):
+    the note says no scale reads |kl| *in that order* ("first") — a later sheet may hold a scale that
+    would, with the tables before the construction (review 61 #4: the gate's A3 note said no scale that
+    fits an A3 sheet reads 60,5 mm, while 63,5 mm fitted a later sheet)."""
+    return ("first", *why[1:]) if why is not None and why[0] == "none" else why
+
+
 @dataclass(frozen=True)
 class Shortfall:
     """Why a set's energy–mass diagram reads |kl| short of the A1 sheet's (``_reach``): ``kind``
     "tall" — at the A1 sheet's |kl| the diagram with I*(φ) turned under it would be at least
-    ``need`` mm tall where a sheet of the set holds ``room`` mm —, or "none" — no scale of the
-    set's grid (L from ``low`` to ``top`` mm) that a sheet holds reads it."""
+    ``need`` mm tall where a sheet of the set holds ``room`` mm —, "none" — no scale of the
+    set's grid (L from ``low`` to ``top`` mm) that a sheet holds reads it —, or "first" — none does
+    with the moments on the first sheet, the order of the work the set keeps (``_on_first``)."""
     kl: float
     target: float
     format: str
