@@ -50,6 +50,31 @@ def energy_flywheel(energy, inertia, w1: float, delta: float, bracket: tuple[flo
         return (w.max() - w.min()) / w1
     return brentq(lambda j: unevenness(j) - delta, *bracket, xtol=1e-10)
 
+
+def motor_steady_speeds(turn, inertia, moment, J_m: float, i: float, eta: float, rpm_sync: float, rpm_rated: float,
+                        power_W: float, w1: float) -> np.ndarray:
+    """The machine on its motor's line, independent of the program: M*_d(ω) = i·η·(A·i·ω + B), the line through
+    (ω_s, 0) and (ω_n, M_n = P_n/ω_n) of the motor's shaft; the midpoint rule on every 4th point of ``turn`` over turns until periodic
+    (T from (I*_0 + J_m)·ω1²/2); ω at the grid's points of the last turn."""
+    ws, wn = rpm_sync * math.pi / 30, rpm_rated * math.pi / 30
+    a = power_W / wn / (wn - ws)
+    b = -a * ws
+    grid = turn[::4]
+    Ig, Mg = np.interp(grid, turn, inertia), np.interp(grid, turn, moment)
+    T = 0.5 * (Ig[0] + J_m) * w1 ** 2
+    for _ in range(100):
+        T_start, speeds = T, []
+        for j in range(len(grid) - 1):
+            h = grid[j + 1] - grid[j]
+            w = math.sqrt(2 * T / (Ig[j] + J_m))
+            speeds.append(w)
+            half = T + 0.5 * h * (i * eta * (a * i * w + b) - Mg[j])
+            wh = math.sqrt(2 * half / ((Ig[j] + Ig[j + 1]) / 2 + J_m))
+            T += h * (i * eta * (a * i * wh + b) - (Mg[j] + Mg[j + 1]) / 2)
+        if abs(T - T_start) < 1e-10 * T:
+            break
+    return np.array(speeds)
+
 def _geometry(th: np.ndarray) -> dict[str, np.ndarray]:
     """Points (complex, m) and angles at the crank's angles ``th`` from the x axis (the upper assembly, B = 1)."""
     A = R * np.exp(1j * th)

@@ -25,7 +25,7 @@ from conftest import scene_study
 
 sys.path.insert(0, str(Path(__file__).parent))
 from review_scenes import LINK60  # noqa: E402
-from test_dynamics_dyn59 import energy_flywheel  # noqa: E402  (the energy method, written once)
+from test_dynamics_dyn59 import energy_flywheel, motor_steady_speeds  # noqa: E402  (the energy method, written once)
 
 R, L2, L4, L5, X_GUIDE = 0.065, 0.24, 0.20, 0.13, 0.03
 O2 = 0.22 + 0.30j
@@ -143,25 +143,8 @@ def test_link60_work_flywheel_and_motor_by_the_energy_method(link60, truth):
     i = 1390 / 150
     assert link60.constant == pytest.approx(0.0014 * i * i, rel=1e-6)
     # the motor's steady state: M*_d(ω) = i·η·(A·i·ω + B), A and B of the line through (ω_s, 0), (ω_n, M_n)
-    ws, wn = 1500 * math.pi / 30, 1390 * math.pi / 30
-    a = 750.0 / wn / (wn - ws)
-    b = -a * ws
-    grid = turn[::4]
-    Ig, Mg = np.interp(grid, turn, inertia), np.interp(grid, turn, moment)
-    Jm = link60.constant + link60.motor_flywheel
-    T = 0.5 * (Ig[0] + Jm) * W1 ** 2
-    for _ in range(100):
-        T_start, speeds = T, []
-        for j in range(len(grid) - 1):
-            h = grid[j + 1] - grid[j]
-            w = math.sqrt(2 * T / (Ig[j] + Jm))
-            speeds.append(w)
-            half = T + 0.5 * h * (i * ETA * (a * i * w + b) - Mg[j])
-            wh = math.sqrt(2 * half / ((Ig[j] + Ig[j + 1]) / 2 + Jm))
-            T += h * (i * ETA * (a * i * wh + b) - (Mg[j] + Mg[j + 1]) / 2)
-        if abs(T - T_start) < 1e-10 * T:
-            break
-    speeds = np.array(speeds)
+    speeds = motor_steady_speeds(turn, inertia, moment, link60.constant + link60.motor_flywheel, i, ETA, 1500, 1390,
+                                 750.0, W1)
     mean = (speeds.max() + speeds.min()) / 2
     assert (speeds.max() - speeds.min()) / mean == pytest.approx(DELTA, rel=2e-3)
     assert mean == pytest.approx(16.706, abs=2e-3)          # less slip than rated: 6.35 % over πn/30

@@ -27,7 +27,7 @@ from conftest import scene_study
 
 sys.path.insert(0, str(Path(__file__).parent))
 from review_scenes import LINK61  # noqa: E402
-from test_dynamics_dyn59 import energy_flywheel  # noqa: E402  (the energy method, written once)
+from test_dynamics_dyn59 import energy_flywheel, motor_steady_speeds  # noqa: E402  (the energy method, written once)
 
 
 def _largest_blank(field, ink, cell: float = 5.0, least: float = 50.0) -> tuple[float, tuple]:
@@ -205,25 +205,8 @@ def test_link61_work_flywheel_and_motor_by_the_energy_method(link61, truth61):
     assert need == pytest.approx(0.67958, abs=2e-5) and 0.55 < need < 0.75
     i = 916 / 120
     assert link61.constant == pytest.approx(0.0031 * i * i, rel=1e-6)
-    ws, wn = 1000 * math.pi / 30, 916 * math.pi / 30
-    a = 750.0 / wn / (wn - ws)
-    b = -a * ws
-    grid = turn[::4]
-    Ig, Mg = np.interp(grid, turn, inertia), np.interp(grid, turn, moment)
-    Jm = link61.constant + link61.motor_flywheel
-    T = 0.5 * (Ig[0] + Jm) * W1 ** 2
-    for _ in range(100):
-        T_start, speeds = T, []
-        for j in range(len(grid) - 1):
-            h = grid[j + 1] - grid[j]
-            w = math.sqrt(2 * T / (Ig[j] + Jm))
-            speeds.append(w)
-            half = T + 0.5 * h * (i * ETA * (a * i * w + b) - Mg[j])
-            wh = math.sqrt(2 * half / ((Ig[j] + Ig[j + 1]) / 2 + Jm))
-            T += h * (i * ETA * (a * i * wh + b) - (Mg[j] + Mg[j + 1]) / 2)
-        if abs(T - T_start) < 1e-10 * T:
-            break
-    speeds = np.array(speeds)
+    speeds = motor_steady_speeds(turn, inertia, moment, link61.constant + link61.motor_flywheel, i, ETA, 1000, 916,
+                                 750.0, W1)
     mean = (speeds.max() + speeds.min()) / 2
     assert (speeds.max() - speeds.min()) / mean == pytest.approx(DELTA, rel=2e-3)
     assert mean == pytest.approx(13.31, abs=5e-3)          # the sheet's ω_m,дв 13,31 rad/s
