@@ -1008,7 +1008,10 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                 ln = max(min(length, 8.0), k_len * length)
                 t0, t1 = (z, z + ln * u) if dot(u, d) > 0 else (z - ln * u, z)
                 cands += [(t0 + k * n, t1 + k * n) for k in lanes_]
-        # … and passes by no other loaded point (S3 with its G3, Φ3 and M^Φ3's arc and names)
+        # … and passes by no other loaded point (S3 with its G3, Φ3 and M^Φ3's arc and names), nor
+        # within ``LANE_MM`` of another arrow — a lane's width by the ruler, not by the float: PRESS4's
+        # R^n03 from O2 outward, R^τ03's head a lane (2.49999… mm) from O2, was refused and R^n03 went
+        # up the rocker in a lane 1.7 mm by G3's head, where "G3" then found no spot of its own
         loaded = {w for w, _, _ in drawn if abs(w - z) > 0.5}
 
         def clear(c, strict: int) -> bool:
@@ -1016,7 +1019,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                 return False
             return strict < 1 or (not _crosses(c[0], c[1], arrows)
                                   and (strict < 2 or (all(_to_segment(w, c[0], c[1]) > 2 * LANE_MM for w in loaded)
-                                                      and all(_apart_mm(c, (t, h)) >= LANE_MM for t, h in arrows
+                                                      and all(_apart_mm(c, (t, h)) >= LANE_MM - 1e-6 for t, h in arrows
                                                               if abs(t - z) > 0.5 and abs(h - z) > 0.5))))
         # where none inside the link's span is clear, from the joint outward along the link's line
         # (the textbook's picture: R^n and R^τ at the joint, R their diagonal) — LINK50's R^n03 at O2
