@@ -832,6 +832,17 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     set_aside: list[tuple[complex, complex, complex, complex]] = []   # … (its point, that, its direction, middle)
     slid: set[str] = set()             # a force slid along its own line past its link (``_on_line``)
 
+    def on_its_line(z: complex, u: complex, pair: tuple[complex, complex], name: str | None = None) -> tuple[complex, complex]:
+        """A place found on the force's own line: its head cleared of a head already there
+        (``_head_clear``), recorded as drawn (``slid`` where ``name`` is given: slid past its link)."""
+        a, b = pair
+        if name is not None:
+            slid.add(name)
+        if _heads_meet(z, b, drawn):
+            a, b = _head_clear(z, u, a, b, drawn, drawn_links, busy)
+        drawn.append((z, a, b))
+        return a, b
+
     def lay(name: str, z: complex, u: complex, length: float) -> tuple[complex, complex]:
         """Where a force's arrow goes: clear of the links (``_clear_of_links``); one lying inside a
         link's line (Φ1 at S1 on the crank), along a link or a slider's guide (Φ5 along the rod CD,
@@ -870,12 +881,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             on_line = _on_line(z, u, length, drawn_links + guide_lines, drawn, blocks,
                                [w for w, _ in busy] + [w for w, _ in names])
             if on_line is not None:
-                a, b = on_line
-                slid.add(name)
-                if _heads_meet(z, b, drawn):
-                    a, b = _head_clear(z, u, a, b, drawn, drawn_links, busy)
-                drawn.append((z, a, b))
-                return a, b
+                return on_its_line(z, u, on_line, name)
             a, b = z, z + length * u
         if inside or over:
             # on its line through its point, over its link's line if need be, or one after the
@@ -885,22 +891,13 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             own = _on_own_line(z, u, length, drawn_links + guide_lines, drawn, blocks,
                                [w for w, _ in busy] + [w for w, _ in names])
             if own is not None:
-                a, b = own
-                if _heads_meet(z, b, drawn):
-                    a, b = _head_clear(z, u, a, b, drawn, drawn_links, busy)
-                drawn.append((z, a, b))
-                return a, b
+                return on_its_line(z, u, own)
             if inside and name not in armed:
                 # slid along its line past the link, a thin stroke from the point to it
                 on_line = _on_line(z, u, length, drawn_links + guide_lines, drawn, blocks,
                                    [w for w, _ in busy] + [w for w, _ in names])
                 if on_line is not None:
-                    a, b = on_line
-                    slid.add(name)
-                    if _heads_meet(z, b, drawn):
-                        a, b = _head_clear(z, u, a, b, drawn, drawn_links, busy)
-                    drawn.append((z, a, b))
-                    return a, b
+                    return on_its_line(z, u, on_line, name)
         # only where no place on the line is free, beside the link in a lane, its own length (G2,
         # G3 on the coulisse's rocker ran 70 mm down it to O), the arm ending on its line of action
         # drawn thin through the point (``lanes``)
