@@ -12,13 +12,14 @@ drawing is at least r / 2 of its own. The acceleration plan's size is taken from
 numbers (p a = a_A / μa against 120 mm, a_A = ω1² · l_OA for a crank turning evenly), not from the
 composition's model.
 
-Checked on mechanisms made here from their dimensions (an offset crank-slider of a long stroke, a
-crank-rocker driving a slider through a rod off the rocker), not on LINK61."""
+Checked on an offset crank-slider of a long stroke made here from its dimensions and on a crank-rocker
+driving a slider through a rod off the rocker (tests/review_scenes.py FRC61B_ROCKER_SLIDER), not on LINK61."""
 from __future__ import annotations
 
 import pytest
 
 from conftest import scene_plan
+from review_scenes import FRC61B_ROCKER_SLIDER
 
 FRACTION = 0.5      # 1 / AUX_OVER: the poorest main drawing against an auxiliary one grown past its first step
 
@@ -79,84 +80,9 @@ direction = "oppose"
 '''
 
 
-def rocker_slider(a: float, b: float, c: float, d: float, rod: float, rpm: float, force: float) -> str:
-    """A crank-rocker O1A-AB-O2B (frame d) whose rocker, extended past B to C, drives a slider E on a
-    horizontal guide through the rod CE."""
-    return f'''
-title = "Шестиланковий механізм"
-title_en = "Six-bar mechanism"
-designation = "ТММ.61.02.000"
-
-[frame.points]
-O1 = [0, 0]
-O2 = [{d}, 0.0]
-
-[frame.guides]
-x = {{ through = [0, {c + 0.05}], angle_deg = 0 }}
-
-[crank]
-name = "O1A"
-pivot = "O1"
-pin = "A"
-length = {a}
-rpm = {rpm}
-points = {{ S1 = 0.0 }}
-
-[[link]]
-name = "AB"
-number = 2
-joints = ["A", "B"]
-length = {b}
-points = {{ S2 = 0.5 }}
-
-[[link]]
-name = "O2B"
-number = 3
-joints = ["O2", "B"]
-length = {c}
-shape = {{ C = [{c * 1.4}, 0] }}
-points = {{ S3 = 0.5 }}
-
-[[link]]
-name = "CE"
-number = 4
-joints = ["C", "E"]
-length = {rod}
-points = {{ S4 = 0.5 }}
-
-[[link]]
-name = "E"
-number = 5
-joints = ["E"]
-slides_on = "x"
-mass = 5
-
-[branch]
-B = 1
-E = 1
-
-[positions]
-count = 12
-start = "working"
-accel = [3]
-force_phi_deg = 45
-
-[loads]
-g = 9.81
-mass_per_length = 20
-inertia_factor = 0.1
-
-[[force]]
-point = "E"
-magnitude = {force}
-stroke = "working"
-direction = "oppose"
-'''
-
-
 SCENES = {
     "crank-slider": crank_slider(r=0.12, lam=3.6, e=0.03, rpm=150, force=1500),
-    "rocker-slider": rocker_slider(a=0.06, b=0.22, c=0.15, d=0.2, rod=0.3, rpm=100, force=700),
+    "rocker-slider": FRC61B_ROCKER_SLIDER,    # a 60-mm crank, rocker 0.15 m extended to C, rod 0.3 m, 100 rpm, 700 N
 }
 
 
