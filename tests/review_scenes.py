@@ -9596,3 +9596,147 @@ delta = 0.04
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+# Stop 62, the lead's check: a crank-slider on an inclined guide whose slider carries the block of a slotted lever (RRP -> RPR), a resistance moment, a 1500-rpm motor.
+LINK62 = """\
+# Stop 62 (the lead's check): a crank-slider on an INCLINED guide (20°) whose slider carries the block of a
+# slotted lever O3C: I(0-1) -> II(2-3) RRP -> II(4-5) RPR (the block 4 pinned to the slider at B, sliding in
+# the lever 5 that swings about O3); the crank ccw at 90 rpm; a 60 N·m resistance moment on the lever over
+# its working stroke; masses by length; dynamics to a 1500-rpm motor, δ = 1/25.
+title = "Шестиланковий механізм з похилим повзуном і кулісою"
+title_en = "Six-bar mechanism with an inclined slider and a slotted lever"
+designation = "ТММ.КП.62.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-62"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O3 = [0.30, 0.20]
+
+[frame.guides]
+x = { through = [0, -0.04], angle_deg = 20, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.06
+rpm = 90
+direction = "ccw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.25
+points = { S2 = 0.4 }
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "x"
+mass = 4
+
+[[link]]
+name = "O3C"
+number = 5
+joints = ["O3"]
+length = 0.34
+points = { C = 1.0, S5 = 0.5 }
+
+[[link]]
+name = "B4"
+number = 4
+joints = ["B"]
+slides_on = "O3C"
+mass = 1.5
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 120
+
+[loads]
+g = 9.81
+mass_per_length = 18
+inertia_factor = 0.1
+
+[[moment]]
+link = 5
+magnitude = 60
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.04
+efficiency = 0.8
+synchronous_rpm = 1500
+"""
+
+
+# Stop 62, the lead's check: a translating roller follower, clockwise, a negative given offset, parabolic rise / cosine return.
+CAM62 = """\
+# Stop 62 (the lead's check): a translating ROLLER follower, the cam CLOCKWISE, a NEGATIVE given offset
+# (e = −6 mm: to the side that raises the rise's pressure angle), a parabolic rise of 100°, a far dwell of
+# 40°, a cosine return of 140°, a near dwell of 80°; stroke 25 mm, roller 8 mm, [ϑ] 30°/40°, 8 divisions.
+title = "Кулачковий механізм з роликовим штовхачем і від'ємним зміщенням (перевірка 62)"
+title_en = "Cam with a roller translating follower and a negative offset (check 62)"
+designation = "ТММ.КМ.62.100"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-62"
+organisation = "НУБіП України"
+
+[cam]
+follower = "translating"
+stroke = 0.025
+offset = -0.006
+roller_radius = 0.008
+phases_deg = { rise = 100, dwell_far = 40, return = 140, dwell_near = 80 }
+laws = { rise = "parabolic", return = "cosine" }
+pressure_angle_deg = { rise = 30, return = 40 }
+rpm = 300
+direction = "cw"
+divisions = 8
+"""
+
+
+# Stop 62, the lead's check: a 10/32 pair with "auto" shifts and a type-B train synthesised for u1H = 15.
+GEARS62 = """\
+# Stop 62 (the lead's check): a pair 10/32 with shifts "auto" (z1 = 10, deep in undercut without a shift),
+# m = 4 mm, and a type-B train SYNTHESISED for u1H = 15 with K = 3 planets, m = 2.5 mm, 1450 rpm.
+title = "Зубчаста передача 10/32 і дворядний планетарний редуктор (перевірка 62)"
+title_en = "A gear pair 10/32 and a two-row planetary reducer (check 62)"
+designation = "ТММ.ЗП.62.000"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-62"
+organisation = "НУБіП України"
+
+[gears]
+z = [10, 32]
+module = 0.004
+shifts = "auto"
+
+[planetary]
+type = "B"
+ratio = 15
+planets = 3
+module = 0.0025
+rpm = 1450
+"""
