@@ -124,7 +124,7 @@ def test_the_two_delta_t_ranges_on_the_sheet_are_named_apart(coulisse, lang):
     from graphplan.util.markup import plain
     _, _, doc = coulisse
     said = plain(approximate_note(doc, lang)).replace("\u00a0", " ")
-    at = re.search(r"(?:з кривої ΔT\(φ\) при|off the ΔT\(φ\) curve at) (\d+)° (?:і|and) (\d+)°", said)
+    at = re.search(r"ΔT_max (?:гр|gr), ΔT_min (?:гр|gr) (?:з накресленої кривої ΔT\(φ\) при|read off the drawn ΔT\(φ\) curve at) (\d+)° (?:і|and) (\d+)°", said)
     assert at, said
     e = doc["flywheel"]["approximate_energy"]
     assert (int(at.group(1)), int(at.group(2))) == (round(e["max_deg"]), round(e["min_deg"]))

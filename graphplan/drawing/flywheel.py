@@ -964,15 +964,22 @@ def speed_record(f: Flywheel, lang: str = "uk", width: float | None = None, heig
     # legend's δ_дв is read off its own curve — stop 49, the dashed curve had none lettered)
     asked = []
     for k, m in enumerate((dyn.motion, dyn.motor_motion)):
-        places = max(3 - math.floor(math.log10(abs(m.mean))), 0) if m.mean else 2    # ω_m's four figures
         tail = "" if k == 0 else (" дв" if lang == "uk" else " mot")
         for name, j, toward in (("max", int(np.argmax(m.omega)), 1j), ("min", int(np.argmin(m.omega)), -1j)):
             at = (float(m.turn[j] / (2 * math.pi) * L), float(y(m.omega[j])))
             step = f"ω_{name}" + ("" if k == 0 else " motor")
             rec.point(at, role="joint", layer=LAYER, step=step)
-            asked.append(LabelRequest(complex(*at), f"ω_{{{name}{tail}}} = {fixed(float(m.omega[j]), lang, places)} "
+            asked.append(LabelRequest(complex(*at), f"ω_{{{name}{tail}}} = {fixed(float(m.omega[j]), lang, _four(m.omega[j]))} "
                                                     f"{w['rad']}/{w['s']}", toward, NUM, step=step))
     return _extremes_lettered(rec, asked, top + 8.0)
+
+
+def _four(v: float) -> int:
+    """The decimals that print ``v`` to four significant figures, as ω_m's legend (stop 62: LINK62's motor
+    curve lettered 10,37 and 9,96 — the extremes to the decimals of its mean 10,17 — beside the flywheel's
+    9,613 and 9,236: an ω_min of three figures among four-figure values on one axis)."""
+    v = abs(float(v))
+    return max(3 - math.floor(math.log10(v)), 0) if v > 0 else 2
 
 
 def tick_column(rec: Record, top: float) -> tuple[float, float, float, float]:

@@ -240,7 +240,7 @@ WORDS = {
     "uk": {"title": "Динаміка машини: {scene}", "pos": "Зведені величини в положеннях (точно; роботи й ΔT графічно, ΔT точно)",
            "res": "Маховик для δ = {delta:g} при ωm = {wm:.4g} рад/с", "method": "метод", "value": "Iм, кг·м²",
            "err": "похибка, %", "exact": "точно (рівняння руху, сталий Mд*)", "graph": "графічно (Віттенбауер)",
-           "approx": "наближено (ΔTₘₐₓ − ΔTₘᵢₙ)/(ωm²δ) − I*сер − Iрот·i²", "merk": "наближено (Мерцалов)",
+           "approx": "наближено (ΔTₘₐₓ гр − ΔTₘᵢₙ гр)/(ωm²δ) − I*сер − Iрот·i²", "merk": "наближено (Мерцалов)",
            "turn": "φ — кут кривошипа від осі x; пов. — поворот від положення 0 у бік обертання кривошипа; "
                    "dI*/dφ — похідна за цим поворотом",
            "motor_fl": "з двигуном (рівняння руху)", "motor": "Двигун", "chosen": "вибрано за правилом",
@@ -250,7 +250,7 @@ WORDS = {
     "en": {"title": "Dynamics of the machine: {scene}", "pos": "Reduced quantities at the positions (exact; the works and ΔT graphical, ΔT exact)",
            "res": "Flywheel for δ = {delta:g} at ωm = {wm:.4g} rad/s", "method": "method", "value": "Ifl, kg·m²",
            "err": "error, %", "exact": "exact (equation of motion, constant Md*)", "graph": "graphical (Wittenbauer)",
-           "approx": "approximate (ΔTmax − ΔTmin)/(ωm²δ) − I*mean − Irotor·i²", "merk": "approximate (Mertsalov)",
+           "approx": "approximate (ΔTmax gr − ΔTmin gr)/(ωm²δ) − I*mean − Irotor·i²", "merk": "approximate (Mertsalov)",
            "turn": "φ: the crank angle from the x axis; turn: from position 0 in the crank's sense; "
                    "dI*/dφ: the derivative along that turn",
            "motor_fl": "with the motor (equation of motion)", "motor": "Motor", "chosen": "chosen by the rule",
@@ -850,12 +850,13 @@ def approximate_note(doc: dict, lang: str, formula: bool = False) -> str:
     hi, lo = decimals_column([p["dt_max"], p["dt_min"]], lang, energy_decimals(doc))    # as Table 1's column prints them
     lo = f"({lo})" if p["dt_min"] < 0 else lo
     mean = "I^*_{м сер}" if uk else "I^*_{m mean}"
-    symbols = f"(ΔT_{{max}} − ΔT_{{min}})/(ω_{{m}}^{{2}}·δ) − {mean}{sym} = " if formula else ""
+    gr = "гр" if uk else "gr"       # read off the drawn curve: graphical, as Table 1's «ΔT гр.» (review 61's remark 6)
+    symbols = f"(ΔT_{{max {gr}}} − ΔT_{{min {gr}}})/(ω_{{m}}^{{2}}·δ) − {mean}{sym} = " if formula else ""
     return (f"{'наближено' if uk else 'approximate'}: {'I_мах' if uk else 'I_fl'} = {symbols}"
             f"({hi}{NB}−{NB}{lo})/({sig(p['omega_mean'], lang)}²·{num(p['delta'], lang)})"
             f" −{NB}{sig(p['i_mean'], lang)}{val}{NB}={NB}"
             f"{_fl(approximate_chain(doc), lang, flywheel_decimals(doc))}"
-            + (f" (ΔT_{{max}}, ΔT_{{min}} {'з кривої ΔT(φ) при' if uk else 'off the ΔT(φ) curve at'} "
+            + (f" (ΔT_{{max {gr}}}, ΔT_{{min {gr}}} {'з накресленої кривої ΔT(φ) при' if uk else 'read off the drawn ΔT(φ) curve at'} "
                f"{fixed(p['max_deg'], lang, 0)}°{NB}{'і' if uk else 'and'}{NB}{fixed(p['min_deg'], lang, 0)}°)"))
 
 

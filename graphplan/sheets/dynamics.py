@@ -54,7 +54,7 @@ WORDS = {
            "positions": "Таблиця 1. Зведені величини в положеннях", "flywheel": "Таблиця 2. Момент інерції маховика, кг·м²",
            "motor": "Таблиця 3. Електродвигун і редуктор", "method": "метод", "value": "I_мах", "err": "δ, %",
            "exact": "точно: рівняння руху (сталий M^*_д)", "graph": "графічно: діаграма Віттенбауера",
-           "approx": "наближено: (ΔT_{max}−ΔT_{min})/(ω_{m}^{2}·δ) − I^*_{м сер}", "merk": "наближено: метод Мерцалова",
+           "approx": "наближено: (ΔT_{max гр}−ΔT_{min гр})/(ω_{m}^{2}·δ) − I^*_{м сер}", "merk": "наближено: метод Мерцалова",
            "motor_fl": "з двигуном (ω_{m дв}): рівняння руху", "scales": "Масштаби", "given": "δ = {d}; для маховика ω_m = πn_1/30 = {w} рад/с (n_1 = {n} об/хв), {motor}",
            "n": "№", "chosen": "вибраний за правилом", "scene": "заданий у сцені", "warn": "Попередження",
            "achieved": "Досягнуто: δ = {d}; ω(2π) = ω(0) — рух усталений{c}",
@@ -69,7 +69,7 @@ WORDS = {
            "not": "не потрібен",
            "why_approx": "наближено {e} %: метод нехтує зміною I^*_м за цикл (похибка методу, а не побудови)",
            "why_approx_small": "наближено {e} %: J {j} %, помножена на J/I_мах = {x} (метод нехтує зміною I^*_м "
-                               "за цикл, а ΔT_{{max}} − ΔT_{{min}} та I^*_{{м сер}} прочитано лінійкою)",
+                               "за цикл, а ΔT_{{max гр}} − ΔT_{{min гр}} та I^*_{{м сер}} прочитано лінійкою)",
            "why_merk": "Мерцалов {e} %: метод оцінює енергію ланок за середньої швидкості ω_m (похибка методу, а не побудови)",
            "short": "|kl| = {kl} мм (на аркуші A1 — {a1} мм): ",
            "short_tall": "з |kl| = {a1} мм діаграма енергія–маса з I^*_м(φ) під нею мала б ≥ {need} мм заввишки, "
@@ -84,7 +84,7 @@ WORDS = {
            "positions": "Table 1. Reduced quantities at the positions", "flywheel": "Table 2. Flywheel moment of inertia, kg·m²",
            "motor": "Table 3. Motor and reducer", "method": "method", "value": "I_fl", "err": "δ, %",
            "exact": "exact: equation of motion (constant M^*_d)", "graph": "graphical: Wittenbauer diagram",
-           "approx": "approximate: (ΔT_{max}−ΔT_{min})/(ω_{m}^{2}·δ) − I^*_{m mean}", "merk": "approximate: Mertsalov's method",
+           "approx": "approximate: (ΔT_{max gr}−ΔT_{min gr})/(ω_{m}^{2}·δ) − I^*_{m mean}", "merk": "approximate: Mertsalov's method",
            "motor_fl": "with the motor (ω_{m mot}): equation of motion", "scales": "Scales", "given": "δ = {d}; for the flywheel ω_m = πn_1/30 = {w} rad/s (n_1 = {n} rpm), {motor}",
            "n": "No.", "chosen": "chosen by the rule", "scene": "given by the scene", "warn": "Warnings",
            "achieved": "Achieved: δ = {d}; ω(2π) = ω(0): a steady state{c}",
@@ -98,7 +98,7 @@ WORDS = {
            "why_graph": "graphical {e} %: the construction's error ({n} divisions, a {p} mm ruler)",
            "not": "not needed",
            "why_approx_small": "approximate {e} %: J {j} %, multiplied by J/I_fl = {x} (the method neglects the "
-                               "change of I^*_m over the cycle, and ΔT_{{max}} − ΔT_{{min}} and I^*_{{m mean}} are read "
+                               "change of I^*_m over the cycle, and ΔT_{{max gr}} − ΔT_{{min gr}} and I^*_{{m mean}} are read "
                                "with the ruler)",
            "why_approx": "approximate {e} %: the method neglects the change of I^*_m over the cycle (the method's error, "
                          "not the drawing's)",
