@@ -171,7 +171,7 @@ def test_the_approximate_flywheels_delta_t_is_named_graphical_where_it_is_quoted
     _, _, doc = link62
     gr = "гр" if lang == "uk" else "gr"
     texts = [plain(it.text).replace("\u00a0", " ") for it in flywheel_table(doc, lang).items if it.kind == "text"]
-    row = next(t for t in texts if t.startswith(("наближено: (", "approximate: (")))
+    row = next(t for t in texts if t.startswith(("наближ.: (", "approx.: (")))
     assert f"(ΔT_max {gr}−ΔT_min {gr})/" in row, row
     note = plain(approximate_note(doc, lang)).replace("\u00a0", " ")
     assert f"(ΔT_max {gr}, ΔT_min {gr} " in note, note

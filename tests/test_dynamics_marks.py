@@ -49,7 +49,7 @@ def test_the_approximate_rows_numbers_give_its_value(built):
     assert (hi - lo) / (w * w * d) - mean - rotor == pytest.approx(printed, rel=2e-3)
     texts = lambda rec: [plain(p.text) for p in rec.items if p.kind == "text"]   # noqa: E731
     table2 = texts(flywheel_table(doc, lang))
-    row = next(k for k, t in enumerate(table2) if t.startswith("наближено: (" if lang == "uk" else "approximate: ("))
+    row = next(k for k, t in enumerate(table2) if t.startswith("наближ.: (" if lang == "uk" else "approx.: ("))
     assert table2[row].endswith("I_рот·i²" if lang == "uk" else "I_rotor·i²")
     assert value(table2[row + 1]) == pytest.approx(printed, abs=1e-9)       # the same string's value
     under = " ".join(t for t in table2 if t[:1] in "(−0123456789" or t.startswith(("наближено: I", "approximate: I")))

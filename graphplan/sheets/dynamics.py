@@ -54,7 +54,7 @@ WORDS = {
            "positions": "Таблиця 1. Зведені величини в положеннях", "flywheel": "Таблиця 2. Момент інерції маховика, кг·м²",
            "motor": "Таблиця 3. Електродвигун і редуктор", "method": "метод", "value": "I_мах", "err": "δ, %",
            "exact": "точно: рівняння руху (сталий M^*_д)", "graph": "графічно: діаграма Віттенбауера",
-           "approx": "наближено: (ΔT_{max гр}−ΔT_{min гр})/(ω_{m}^{2}·δ) − I^*_{м сер}", "merk": "наближено: метод Мерцалова",
+           "approx": "наближ.: (ΔT_{max гр}−ΔT_{min гр})/(ω_{m}^{2}·δ) − I^*_{м сер}", "merk": "наближ.: метод Мерцалова",
            "motor_fl": "з двигуном (ω_{m дв}): рівняння руху", "scales": "Масштаби", "given": "δ = {d}; для маховика ω_m = πn_1/30 = {w} рад/с (n_1 = {n} об/хв), {motor}",
            "n": "№", "chosen": "вибраний за правилом", "scene": "заданий у сцені", "warn": "Попередження",
            "achieved": "Досягнуто: δ = {d}; ω(2π) = ω(0) — рух усталений{c}",
@@ -84,7 +84,7 @@ WORDS = {
            "positions": "Table 1. Reduced quantities at the positions", "flywheel": "Table 2. Flywheel moment of inertia, kg·m²",
            "motor": "Table 3. Motor and reducer", "method": "method", "value": "I_fl", "err": "δ, %",
            "exact": "exact: equation of motion (constant M^*_d)", "graph": "graphical: Wittenbauer diagram",
-           "approx": "approximate: (ΔT_{max gr}−ΔT_{min gr})/(ω_{m}^{2}·δ) − I^*_{m mean}", "merk": "approximate: Mertsalov's method",
+           "approx": "approx.: (ΔT_{max gr}−ΔT_{min gr})/(ω_{m}^{2}·δ) − I^*_{m mean}", "merk": "approx.: Mertsalov's method",
            "motor_fl": "with the motor (ω_{m mot}): equation of motion", "scales": "Scales", "given": "δ = {d}; for the flywheel ω_m = πn_1/30 = {w} rad/s (n_1 = {n} rpm), {motor}",
            "n": "No.", "chosen": "chosen by the rule", "scene": "given by the scene", "warn": "Warnings",
            "achieved": "Achieved: δ = {d}; ω(2π) = ω(0): a steady state{c}",
@@ -171,7 +171,9 @@ def flywheel_table(doc: dict, lang: str, why: list[str] | tuple[str, ...] = ()) 
     exact = (flywheel_text(fw["exact"], lang, d) if fw["needed"] else not_needed(doc["motion"]["delta"], doc["delta"], lang))
     motor = (flywheel_text(fw["motor"], lang, d) if fw["motor"] > 0 else
              not_needed(doc["motor"]["motion"]["delta"], doc["delta"], lang, motor_delta(lang)))
-    # the approximate row names every term its value subtracts (the rotor, the reducer: notes' arithmetic)
+    # the approximate row names every term its value subtracts (the rotor, the reducer: notes' arithmetic); its ΔT
+    # extremes marked graphical (гр/gr, stop 62) and «наближ.»/«approx.» shortened so that the column keeps its
+    # width (78 / 84,5 mm: the en row at full length made Table 2 7 mm wider and LINK61's results left the nook)
     approx = w["approx"] + (" − I_рот·i²" if lang == "uk" else " − I_rotor·i²") + (
         (" − I^*_ред" if lang == "uk" else " − I^*_red") if fw["reducer_reduced"] > 0 else "")
     errs = flywheel_errors(doc)              # δ worked out from the printed values, as the terminal's
