@@ -9740,3 +9740,75 @@ planets = 3
 module = 0.0025
 rpm = 1450
 """
+
+
+# dyn62 (stop 62, helper dyn62): its own dynamics mechanism — the ram drive of a hay baler, an offset crank-slider (the
+# crank clockwise) whose ram meets a compression force that grows over the second half of its working stroke (to_max),
+# a 1000-rpm motor, δ = 1/15; the approximate flywheel +26 % (flagged), the diagrams redrawn on 24 divisions
+DYN62_BALER = """\
+title = "Кривошипно-повзунний механізм поршня прес-підбирача"
+title_en = "Crank-slider ram drive of a hay baler"
+designation = "ТММ.КП.62.620"
+
+[sheet]
+student = "Студент С. С."
+teacher = "Викладач В. В."
+group = "МБ-62"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+
+[frame.guides]
+ram = { through = [0, -0.05], angle_deg = 0, title_uk = "поршня", title_en = "of the ram" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.2
+rpm = 80
+direction = "cw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.9
+points = { S2 = 0.35 }
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "ram"
+mass = 45
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "min"
+working_stroke = "to_max"
+accel = [2]
+force_phi_deg = 150
+
+[loads]
+g = 9.81
+mass_per_length = 25
+inertia_factor = 0.1
+
+[[force]]
+point = "B"
+magnitude = 6000
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0], [0.2, 0], [0.36, 1], [0.4, 0.3]]
+
+[dynamics]
+delta = 0.0667
+efficiency = 0.85
+synchronous_rpm = 1000
+"""

@@ -94,6 +94,16 @@ def test_link61s_results_tables_fill_the_nook_under_the_notes(link61_sheets, lan
     assert t1[3] > t2[3] and t1[0] > inertia[2]             # Table 1 at the right, read first
     speed = at["speed"]
     assert speed[1] > t1[3]                                   # ω(φ) over Table 1
+    # stop 62: the notes cannot hold the motor's sentence with the tables under them (no room in either
+    # language); its numbers stay on the sheet — Table 3 gives the cycle's mean power under the rule's peak
+    # (0,2383 kW by 0,6796 kW: ω_m·M*_д/η), in the paper under it beside Table 2, the tables where they were
+    from graphplan.util.markup import plain
+    t3 = [plain(it.text).replace("\u00a0", " ") for p in sheet.placed if p.name == "motor table"
+          for it in p.record.items if it.kind == "text"]
+    row = t3.index("середня ω_m·M*_д/η, кВт" if lang == "uk" else "mean ω_m·M*_d/η, kW")
+    assert float(t3[row + 1].replace(",", ".")) == pytest.approx(101.279 / (2 * math.pi) * W1 / ETA / 1000, abs=1e-4)
+    assert t3[row - 2].startswith("P = M*") and t3[row - 1] == ("0,6796" if lang == "uk" else "0.6796")
+    assert t3[row + 1] == ("0,2383" if lang == "uk" else "0.2383")
 
 
 # -- 5. LINK61 by its own closed form and the energy method --------------------------------------------------

@@ -196,9 +196,11 @@ def flywheel_table(doc: dict, lang: str, why: list[str] | tuple[str, ...] = ()) 
     return rec
 
 
-def motor_table(doc: dict, lang: str) -> Record:
+def motor_table(doc: dict, lang: str, mean: bool = False) -> Record:
     """The motor's data, its characteristic and the power rule; a motor weaker than the rule asks
-    has its power cell marked (*) and the notes say so."""
+    has its power cell marked (*) and the notes say so. ``mean``: the mean power ω_m·M*_д/η in a row
+    under the rule's peak — where the notes cannot hold the motor's sentence (report.dynamics
+    ``motor_note``, which compares the two: ``_mean_row``)."""
     w = WORDS[lang]
     m = doc["motor"]
     uk = lang == "uk"
@@ -212,6 +214,8 @@ def motor_table(doc: dict, lang: str) -> Record:
             ["M_н / M_{max}, Н·м" if uk else "M_n / M_{max}, N·m", f"{fmt(m['moment_rated'], lang)} / {fmt(m['moment_max'], lang)}"],
             ["M = Aω + B, Н·м" if uk else "M = Aω + B, N·m", f"{fmt(m['A'], lang)}·ω + {fmt(m['B'], lang)}"],
             ["P = M^*_{с max}·ω_1/η, кВт" if uk else "P = M^*_{c max}·ω_1/η, kW", fmt(m["power_needed_kW"], lang)],
+            *([["середня ω_m·M^*_д/η, кВт" if uk else "mean ω_m·M^*_d/η, kW",
+                fmt(doc["moment_driving"] * doc["omega_mean"] / m["efficiency"] / 1000.0, lang)]] if mean else []),
             ["i; η" if m.get("ratio_given") else f"i = n_{'н' if uk else 'n'}/n_1; η",
              f"{num(m['ratio'], lang, 4)}; {num(m['efficiency'], lang)}"],
             ["I_рот·i², кг·м²" if uk else "I_rotor·i², kg·m²", fmt(m["rotor_reduced"], lang)],
@@ -1899,6 +1903,20 @@ def _results_nooked(f: Form, fw: Flywheel, per: dict[str, tuple], parts: int, re
     return True
 
 
+def _mean_row(nooked: list[Leaf], doc: dict, lang: str, factor: float, room: float) -> list[Leaf]:
+    """The results' tables under the notes in the band's nook (Table 2, Table 3 side by side) with the mean
+    power ω_m·M*_д/η in a row of Table 3 under the rule's peak, where the notes lost the motor's sentence
+    (``with_motor``: LINK61's, once the tables moved under them at stop 61 — a teacher read P = 0,6796 kW
+    with nothing to say the cycle's mean is 0,2383 kW; Table 2's design note already says why a flywheel
+    beside the motor) and Table 3 so grown still stands in the nook's ``room`` under the notes (mm, to
+    the field's foot) no taller than Table 2 beside it (the row takes the paper under Table 3, the
+    composition unchanged). Else the tables as they were (the terminal says it always)."""
+    if len(nooked) != 2 or not motor_note(doc, lang):
+        return nooked
+    t3 = Leaf(nooked[1].name, record=enlarged(motor_table(doc, lang, mean=True), factor))
+    return [nooked[0], t3] if t3.h <= min(room, max(nooked[0].h, nooked[1].h)) + 1e-9 else nooked
+
+
 def count_dynamics_sheets(st: Study, f: Form, args: Options) -> int:
     """``len(build_dynamics_sheet(st, f, args).pages)`` without drawing it where ``construction``
     chose one sheet's composition (that builder then lays ``pages = [items]``): what the scene's
@@ -2043,8 +2061,11 @@ def build_dynamics_sheet(st: Study, f: Form, args: Options) -> Sheet:
             if nooked:                                 # the results' tables under the notes, the nook run
                 n0 = min(n0, region[1] - dy)           # down to the field's foot (``_results_nooked``)
                 under = _tables_size([[t] for t in nooked], 2)[1] + GAP
-            note_lines = with_motor(note_lines, lines_of(notes(fw, doc, lang, short, motor=True)), n3 - n0 - under, nw)
+            fuller = lines_of(notes(fw, doc, lang, short, motor=True))
+            note_lines = with_motor(note_lines, fuller, n3 - n0 - under, nw)
             nrec = note_block(note_lines, nw)          # from the left side of the band's box
+            if nooked and note_lines is not fuller:    # the motor's mean power in Table 3 where it stays
+                nooked = _mean_row(nooked, doc, lang, factor, n3 - n0 - _wh(nrec)[1] - GAP)   # in the nook
             nb = (n1 + dx - nw, n3 + dy - _wh(nrec)[1], n1 + dx, n3 + dy)
             if nooked:                                 # side by side under the notes, from the nook's left
                 items += set_columns([[t] for t in nooked], nb[0], nb[1] - GAP)
