@@ -486,7 +486,7 @@ def test_the_flywheels_arithmetic_gives_table_2s_values_from_its_printed_numbers
     assert round((hi - lo) / (w * w * d) - subtracted, _decimals(value)) == pytest.approx(_number(value), abs=1e-9)
     table = {r[0]: r[1] for r in rows(sheet, "flywheel table") if len(r) == 3}
     assert next(v for k, v in table.items() if k.startswith("графічно")) == graphical
-    assert next(v for k, v in table.items() if k.startswith("наближено: (")) == value
+    assert next(v for k, v in table.items() if k.startswith("наближ.: (")) == value
 
 
 def test_the_english_sheet_writes_tan_and_the_ukrainian_tg(sheets):
