@@ -76,14 +76,15 @@ def _mu_F(fp: ForcePlans, gp: GroupPlan) -> float:
 
 
 def _wedge_outline(fp: ForcePlans, link: str, mu: float) -> list[complex]:
-    """A slider that carries a guide off its own joint — the wedge press's wedge B on the frame's
-    guide, its inclined face the slot the ram's block C rides in — drawn as the kinematics sheet
-    draws it (``plans._wedge_sides``): the slot along its guide through the blocks riding in it
-    (``linkshape.slot_line``) and the triangle of the joint and the slot's ends, one rigid body (mm);
+    """A slider that carries a guide — the wedge press's wedge B on the frame's guide, its inclined
+    face the slot the ram's block C rides in — drawn as the kinematics sheet draws it
+    (``plans._wedge_sides``): the slot along its guide through the blocks riding in it
+    (``linkshape.slot_line``) and, off its joint, the triangle of the joint and the slot's ends; through
+    it, the triangle resting on its guide (``linkshape.wedge_body``) — one rigid body (mm);
     none for any other link (review 52: the wedge drawn as a bar from B to C, its face missing)."""
     import numpy as np
     from graphplan.drawing.plans import WEDGE_OFF_MM
-    from graphplan.model.linkshape import slot_line
+    from graphplan.model.linkshape import slot_line, wedge_body
     mech, kin = fp.ks.mech, fp.ks.kin
     lk = mech.links[link]
     riders = [r for r, other in mech.links.items()
@@ -97,8 +98,8 @@ def _wedge_outline(fp: ForcePlans, link: str, mu: float) -> list[complex]:
     x = complex(body.at(lk.local[lk.joints[0]])[0][0]) / mu
     blocks = [complex(kin.bodies[r].at(z)[0][0]) / mu for r in riders for z in mech.links[r].local.values()]
     a, b = (complex(z) for z in slot_line(base, u, [x], blocks))
-    if abs(((x - a) * u.conjugate()).imag) <= WEDGE_OFF_MM:
-        return [a, b]
+    if abs(((x - a) * u.conjugate()).imag) <= WEDGE_OFF_MM:     # the face through B: the textbook's triangle
+        return wedge_body(a, b, x, complex(np.exp(1j * body.theta[0]))) or [a, b]   # on its guide (review 62)
     return [a, x, b, a]
 
 
