@@ -54,7 +54,7 @@ def test_the_position_plan_draws_the_wedge_as_its_triangle(st):
     rec = position_record(build_plans(st))
     segs = [tuple(complex(*p) for p in it.points) for it in rec.items
             if it.kind == "segment" and it.layer == "mechanism" and len(it.points) == 2]
-    found = 0
+    found = []
     for i, (p, q) in enumerate(segs):
         if abs(p - q) < 1e-9 or not math.isclose(_deg(p, q), FACE, abs_tol=1e-6):
             continue
@@ -62,8 +62,14 @@ def test_the_position_plan_draws_the_wedge_as_its_triangle(st):
             if abs(r - q) < 1e-9 and math.isclose(_deg(r, s), 90.0, abs_tol=1e-6):
                 if any(abs(u - s) < 1e-9 and abs(v - p) < 1e-9 and math.isclose(_deg(u, v), GUIDE, abs_tol=1e-6)
                        for u, v in segs):
-                    found += 1
-    assert found >= 2, found      # the plan's thick positions (accel = [3, 8]) at least
+                    found.append([p, q, s])
+    assert len(found) >= 2, found      # the plan's thick positions (accel = [3, 8]) at least
+    # the frame's hatching (the ram's guide runs down into the wedge) stops at the wedge's body
+    from graphplan.model.linkshape import _inside
+    hatch = [tuple(complex(*p) for p in it.points) for it in rec.items if it.kind == "segment" and it.role == "hatch"]
+    assert hatch
+    inside = [h for h in hatch for t in found if _inside((h[0] + h[1]) / 2, t)]
+    assert not inside, inside
 
 
 def test_the_triangles_corner_is_b_and_its_face_carries_c(st):
@@ -101,3 +107,27 @@ def test_table_4_gives_the_wedges_angle(st):
     texts = [it.text for it in rec.items if getattr(it, "text", None)]
     row = [i for i, t in enumerate(texts) if t == "α_{3}"]
     assert row and texts[row[0] + 1] == "35°", texts
+
+
+def test_the_rams_bar_is_drawn_between_c_and_d():
+    """Review 62's F2: the ram 5 (a slider at C on the vertical guide, its point D 0,06 m up the guide)
+    is drawn on its group as its bar C–D, not as a block with a lone dot D above it."""
+    from graphplan.drawing.forces import _link_outline
+    fp = scene_force_plans(WEDGE62_PRESS)
+    lk = fp.ks.mech.links["D"]
+    c = complex(fp.ks.kin.bodies["D"].at(lk.local["C"])[0][0]) / fp.mu_l
+    out = _link_outline(fp, "D", fp.mu_l)
+    assert len(out) == 2, out
+    assert {round(abs(z - c), 6) for z in out} == {0.0, round(0.06 / fp.mu_l, 6)}, (out, c)
+    d = next(z for z in out if abs(z - c) > 1e-6)
+    assert math.isclose(_deg(c, d), 90.0, abs_tol=1e-6) and d.imag > c.imag
+
+
+def test_the_rams_point_d_has_no_second_numbered_path(st):
+    """Review 62's F6: D (the ram's point 0,06 m up its vertical guide from its block C) runs on C's own
+    line, so its path is not drawn and numbered a second time («C″ 2, 10» read as C″ at positions 2, 10);
+    the rod's centre S2 keeps its path. The truth: D − C of the scene lies along the guide."""
+    from graphplan.graphic.plans import default_trajectories
+    lk = st.mech.links["D"]
+    assert abs((lk.local["D"] - lk.local["C"]).imag) < 1e-12      # along the ram's guide
+    assert default_trajectories(st.mech) == ("S2",)
