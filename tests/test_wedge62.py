@@ -131,3 +131,21 @@ def test_the_rams_point_d_has_no_second_numbered_path(st):
     lk = st.mech.links["D"]
     assert abs((lk.local["D"] - lk.local["C"]).imag) < 1e-12      # along the ram's guide
     assert default_trajectories(st.mech) == ("S2",)
+
+
+def test_the_schemes_guide_is_not_hatched_inside_the_wedge():
+    """The force scheme's fixed guide (``forces._guide``) leaves out the strokes inside a closed body
+    drawn over it — the wedge's triangle the ram's guide runs down into — and keeps the others."""
+    from graphplan.drawing.forces import _guide
+    from graphplan.graphic.record import Record
+    from graphplan.model.linkshape import _inside
+    tri = [0j, 40 + 28j, 40 + 0j, 0j]            # a wedge's triangle, its vertical side at x = 40
+    z, g = 38 + 20j, 1j                          # a vertical guide 2 mm left of that side
+    strokes = {}
+    for bodies in ((), [tri]):
+        rec = Record()
+        _guide(rec, z, g, [], "", bodies)
+        strokes[len(bodies)] = [tuple(complex(*p) for p in it.points) for it in rec.items if it.role == "hatch"]
+    inside = lambda ss: [s for s in ss if _inside((s[0] + s[1]) / 2, tri)]   # noqa: E731
+    assert inside(strokes[0]) and not inside(strokes[1])
+    assert len(strokes[1]) == len(strokes[0]) - len(inside(strokes[0])) > 0
