@@ -9812,3 +9812,97 @@ delta = 0.0667
 efficiency = 0.85
 synchronous_rpm = 1000
 """
+
+
+
+# wedge62 (stop 62): review 62's wedge press (a): the wedge 3's inclined face (35°) runs through its own joint B and
+# carries the block 4 pinned at C to the vertical ram 5 — drawn as the textbook's triangle on its guide, α3 in Table 4.
+WEDGE62_PRESS = '''
+# review62 (a): a six-bar WEDGE press: an offset crank-slider O-A-B drives the wedge 3 (the slider B on a
+# horizontal guide) whose inclined face (35° to the guide) carries the block 4 at C, pinned to the vertical
+# ram 5: I(0-1) -> II(2-3) ВВП -> II(4-5) ПВП; the crank CLOCKWISE at 120 rpm; 2500 N against the ram on its
+# upward (working) stroke; masses by length, the wedge 8 kg, the block 1 kg, the ram 6 kg; [dynamics] to a
+# 1000-rpm motor, δ = 0.05.
+title = "Клиновий прес з кривошипно-повзунним приводом"
+title_en = "Wedge press driven by a crank-slider"
+designation = "ТММ.КП.62.810"
+
+[sheet]
+student = "Рецензент Р. Р."
+teacher = "Викладач В. В."
+group = "МБ-62"
+organisation = "НУБіП України"
+
+[frame.points]
+O = [0, 0]
+
+[frame.guides]
+x = { through = [0, -0.02], angle_deg = 0, title_uk = "клина 3", title_en = "of the wedge 3" }
+y = { through = [0.34, 0], angle_deg = 90, title_uk = "повзуна 5", title_en = "of the ram 5" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.05
+rpm = 120
+direction = "cw"
+points = { S1 = 0.5 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.22
+points = { S2 = 0.4 }
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "x"
+guide = { through = [0.0, 0.0], angle_deg = 35 }
+mass = 8
+
+[[link]]
+name = "C"
+number = 4
+joints = ["C"]
+slides_on = "B"
+mass = 1
+
+[[link]]
+name = "D"
+number = 5
+joints = ["C"]
+slides_on = "y"
+shape = { D = [0.06, 0] }
+mass = 6
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "working"
+working_stroke = "to_max"
+accel = [3, 8]
+force_phi_deg = 90
+output = "C"
+
+[loads]
+g = 9.81
+mass_per_length = 20
+inertia_factor = 0.1
+
+[[force]]
+point = "C"
+magnitude = 2500
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.9
+synchronous_rpm = 1000
+'''

@@ -76,14 +76,15 @@ def _mu_F(fp: ForcePlans, gp: GroupPlan) -> float:
 
 
 def _wedge_outline(fp: ForcePlans, link: str, mu: float) -> list[complex]:
-    """A slider that carries a guide off its own joint — the wedge press's wedge B on the frame's
-    guide, its inclined face the slot the ram's block C rides in — drawn as the kinematics sheet
-    draws it (``plans._wedge_sides``): the slot along its guide through the blocks riding in it
-    (``linkshape.slot_line``) and the triangle of the joint and the slot's ends, one rigid body (mm);
+    """A slider that carries a guide — the wedge press's wedge B on the frame's guide, its inclined
+    face the slot the ram's block C rides in — drawn as the kinematics sheet draws it
+    (``plans._wedge_sides``): the slot along its guide through the blocks riding in it
+    (``linkshape.slot_line``) and, off its joint, the triangle of the joint and the slot's ends; through
+    it, the triangle resting on its guide (``linkshape.wedge_body``) — one rigid body (mm);
     none for any other link (review 52: the wedge drawn as a bar from B to C, its face missing)."""
     import numpy as np
     from graphplan.drawing.plans import WEDGE_OFF_MM
-    from graphplan.model.linkshape import slot_line
+    from graphplan.model.linkshape import slot_line, wedge_body
     mech, kin = fp.ks.mech, fp.ks.kin
     lk = mech.links[link]
     riders = [r for r, other in mech.links.items()
@@ -97,8 +98,8 @@ def _wedge_outline(fp: ForcePlans, link: str, mu: float) -> list[complex]:
     x = complex(body.at(lk.local[lk.joints[0]])[0][0]) / mu
     blocks = [complex(kin.bodies[r].at(z)[0][0]) / mu for r in riders for z in mech.links[r].local.values()]
     a, b = (complex(z) for z in slot_line(base, u, [x], blocks))
-    if abs(((x - a) * u.conjugate()).imag) <= WEDGE_OFF_MM:
-        return [a, b]
+    if abs(((x - a) * u.conjugate()).imag) <= WEDGE_OFF_MM:     # the face through B: the textbook's triangle
+        return wedge_body(a, b, x, complex(np.exp(1j * body.theta[0]))) or [a, b]   # on its guide (review 62)
     return [a, x, b, a]
 
 
@@ -126,6 +127,10 @@ def _link_outline(fp: ForcePlans, link: str, mu: float | None = None, framed: bo
                              extras + [z for k, z in pos.items() if k.startswith("~")])
     if len(lk.joints) >= 3:
         return [pos[p] for p in lk.joints] + [pos[lk.joints[0]]]
+    if len(pts) == 1 and any(abs(z - pts[0]) > 1e-6 for z in extras):
+        # a slider's own bar past its block: the ram 5's C–D (review 62 F2: D a lone dot over C)
+        far = max(extras, key=lambda z: abs(z - pts[0]))
+        return rigid_outline(pts + [far], [z for z in extras if z is not far])
     if len(pts) < 2:
         return pts
     if extras:          # a slotted lever's own points past its block (review 12: O3E's end E drawn apart)
@@ -598,11 +603,14 @@ GUIDE_MM = 25.0    # a slider's fixed guide drawn this far either side of the bl
 HATCH_BAND_MM = BLOCK_HALF + 1.0 + LANE_MM + 0.5   # the guide's hatching on the side with fewer lines this near
 
 
-def _guide(rec: Record, z: complex, g: complex, lines: list[tuple[complex, complex]], step: str) -> None:
+def _guide(rec: Record, z: complex, g: complex, lines: list[tuple[complex, complex]], step: str,
+           bodies: list[list[complex]] = ()) -> None:
     """A slider's fixed guide as the kinematics sheet draws it (drawing.plans.draw_frame): a line of
     the frame along the guide with short hatch strokes every 4 mm on one side, left clear under
     the block — on the side where fewer of the drawn ``lines`` (links, arrows) pass near it; a
-    stroke that would still cross one is left out."""
+    stroke that would still cross one is left out, and one inside a closed body drawn over the
+    guide (``bodies``: a wedge's triangle, review 62 — the ram's guide running down into it)."""
+    from graphplan.model.linkshape import _inside
     u = _unit(g)
 
     def ink(n: complex) -> int:          # samples of the lines inside the hatching's band on side n
@@ -620,7 +628,7 @@ def _guide(rec: Record, z: complex, g: complex, lines: list[tuple[complex, compl
         # the block (8 mm long) and a millimetre either side clear; a stroke that would cross a
         # line (the rod coming in at a small angle) or an arrow left out, as a draftsman breaks it
         if abs(t) > 6.0 and not any(_on_segment(p + (q - p) * k / 4, a, b, 0.4) for k in range(1, 5)
-                                    for a, b in lines):
+                                    for a, b in lines) and not any(_inside((p + q) / 2, w) for w in bodies):
             rec.segment(_pt(p), _pt(q), role="hatch", layer="frame", step=step)
         t += 4.0
 
@@ -1216,7 +1224,8 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     for z, g in guides if gp.kind == "mechanism" else ():
         # the scheme keeps its guides; a group freed from the frame shows the reaction (R05) in
         # the guide's place — its block's arrows still laid clear of the guide's line
-        _guide(rec, z, g, [(a, b) for _, a, b in drawn] + drawn_links, step)
+        _guide(rec, z, g, [(a, b) for _, a, b in drawn] + drawn_links, step,
+               [w for link in gp.links if len(w := _wedge_outline(fp, link, mu)) >= 4])
     lab = Labeler(rec)
     if omega_at is not None:
         ck = mech.crank

@@ -11,7 +11,8 @@ from graphplan.util.markup import escape, indexed
 from graphplan.graphic.record import Record, arc_head, text_width
 from graphplan.drawing.labels import LabelRequest, place_first, place_labels, place_owned
 from graphplan.model.linkshape import (BUSH_GAP_MM, BUSH_HALF_MM, extra_points, outline_names, rod_crossing,
-                                        rod_from_slot, rod_stubs, slot_line, slot_outline, yoke_body, yoke_guide, yoke_shape)
+                                        rod_from_slot, rod_stubs, slot_line, slot_outline, wedge_body, yoke_body, _inside,
+                                        yoke_guide, yoke_shape)
 from graphplan.model.mechanism import FRAME
 from graphplan.graphic.plans import Layout, Plan, Plans, Scheme, where
 from graphplan.graphic.position_plan import Arc
@@ -61,9 +62,11 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
                 g = mech.guides[mech.links[slider].slides_on]
                 a, b = slot_line(lay.poses[name].at(g.through), lay.poses[name].direction(g.angle), own,
                                  [pts[p] for p in mech.links[slider].local])
+                if thick and link.slides_on is not None and _wedge_sides(
+                        rec, [pts[p] for p in joints], complex(a), complex(b), lay.poses[name].direction(0.0),
+                        role, step):
+                    continue
                 rec.segment(_pt(complex(a)), _pt(complex(b)), role=role, width=width, layer="mechanism", step=step)
-                if thick and link.slides_on is not None:
-                    _wedge_sides(rec, [pts[p] for p in joints], complex(a), complex(b), role, step)
         if link.slides_on is not None and len(joints) <= 1:
             if thick:
                 centre = pts[next(iter(link.local))]     # the slider's own point (its first joint)
@@ -90,15 +93,52 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
 WEDGE_OFF_MM = 1.0   # a sliding carrier's joint this far off its slot's line is joined to the slot
 
 
-def _wedge_sides(rec: Record, joints: list[complex], a: complex, b: complex, role: str, step: str) -> None:
-    """A slider that carries a slot off its own joint (a wedge: the block B on the frame's guide, its
-    inclined face the slot the ram's block C rides in) drawn as one rigid body, the triangle of its
-    joint and the slot's ends — not a slot floating apart from its block (review 52)."""
+def _wedge_sides(rec: Record, joints: list[complex], a: complex, b: complex, u_slide: complex, role: str,
+                 step: str) -> bool:
+    """A slider that carries a slot (a wedge: the block B on the frame's guide, its inclined face the
+    slot the ram's block C rides in) drawn as one rigid body: off its own joint, the triangle of its
+    joint and the slot's ends (review 52), the face ``a``–``b`` then drawn by the caller; through its
+    joint, the textbook's triangle resting on its guide (``linkshape.wedge_body``: the face, its far
+    end's perpendicular to the guide's line along ``u_slide`` and the base along it, review 62: not a
+    bar from a pin at B to C) drawn here, face and all — True when so."""
     u = (b - a) / abs(b - a)
-    for X in joints:
-        if abs(((X - a) * u.conjugate()).imag) > WEDGE_OFF_MM:
-            rec.segment(_pt(X), _pt(a), role=role, layer="mechanism", step=step)
-            rec.segment(_pt(X), _pt(b), role=role, layer="mechanism", step=step)
+    off = [X for X in joints if abs(((X - a) * u.conjugate()).imag) > WEDGE_OFF_MM]
+    for X in off:
+        rec.segment(_pt(X), _pt(a), role=role, layer="mechanism", step=step)
+        rec.segment(_pt(X), _pt(b), role=role, layer="mechanism", step=step)
+    if off or not joints:
+        return False
+    body = wedge_body(a, b, joints[0], u_slide)
+    if not body:
+        return False
+    for p, q in zip(body, body[1:]):
+        rec.segment(_pt(p), _pt(q), role=role, layer="mechanism", step=step)
+    return True
+
+
+def wedge_bodies(sc: Scheme, lay: Layout) -> list[list[complex]]:
+    """The wedges drawn as their triangles on their guides at this position (``_wedge_sides``,
+    ``linkshape.wedge_body``: a sliding link whose carried slot runs through its own joint), mm — the
+    frame's hatching stops at them (the ram's guide of review 62's press runs down into the wedge)."""
+    mech = sc.mech
+    pts = joints_at(sc, lay)
+    out = []
+    for name, carried in guide_carriers(sc).items():
+        link = mech.links.get(name)
+        if link is None or link.slides_on is None or yoke_guide(mech, name) is not None or not link.joints:
+            continue
+        own = [pts[p] for p in list(link.joints) + [q for q in extra_points(link) if q in pts]]
+        for slider in carried:
+            g = mech.guides[mech.links[slider].slides_on]
+            a, b = (complex(z) for z in slot_line(lay.poses[name].at(g.through), lay.poses[name].direction(g.angle),
+                                                  own, [pts[p] for p in mech.links[slider].local]))
+            u = (b - a) / abs(b - a)
+            X = pts[link.joints[0]]
+            if all(abs(((pts[j] - a) * u.conjugate()).imag) <= WEDGE_OFF_MM for j in link.joints):
+                body = wedge_body(a, b, X, lay.poses[name].direction(0.0))
+                if body:
+                    out.append(body)
+    return out
 
 
 SUPPORT_HALF_DEG = 45.0   # the support's triangle and hatched bar, seen from its pivot: ±45° about its axis
@@ -311,10 +351,14 @@ def draw_frame(rec: Record, sc: Scheme, layouts: list[Layout], thick: list[Layou
         # block sits on the guide's hatched side, and strokes through it read as drawn over it
         blocks = [((lay.poses[s].at(mech.links[s].local[next(iter(mech.links[s].local))]) - base)
                    * u.conjugate()).real for lay in (thick or []) for s in sliders]
+        # … and at a wedge's triangle drawn over it (review 62: the ram's guide run down into the wedge,
+        # its strokes across the wedge's side): the guide's line goes on, its hatching stops
+        wedges = [w for lay in (thick or []) for w in wedge_bodies(sc, lay)]
         t = lo
         while t <= hi:
-            if not any(t - 2.0 < c + BLOCK[0] / 2 + BLOCK_CLEAR and t > c - BLOCK[0] / 2 - BLOCK_CLEAR for c in blocks):
-                s = base + t * u + normal * 2.5
+            s = base + t * u + normal * 2.5
+            if not any(t - 2.0 < c + BLOCK[0] / 2 + BLOCK_CLEAR and t > c - BLOCK[0] / 2 - BLOCK_CLEAR for c in blocks) \
+                    and not any(_inside(z, w) for w in wedges for z in (base + t * u + normal * 0.35, s - u * 2.0)):
                 rec.segment(_pt(base + t * u + normal * 0.35), _pt(s - u * 2.0), role="hatch", layer="frame")
             t += 4.0
     return outlines

@@ -30,7 +30,7 @@ import numpy as np
 from graphplan.util.words import fixed, num, word
 from graphplan.util.errors import GraphplanError
 from graphplan.exact.kinematics import Kinematics
-from graphplan.model.mechanism import Mechanism
+from graphplan.model.mechanism import FRAME, Mechanism
 from graphplan.exact.positions import Study
 from graphplan.graphic.scales import Targets, standard_scale
 from graphplan.graphic.position_plan import Layout, Scheme, construct_position
@@ -155,8 +155,15 @@ def default_trajectories(mech: Mechanism) -> tuple[str, ...]:
     for name, link in mech.links.items():
         if name == mech.crank.link:
             continue
+        first = next(iter(link.local))
+        # a point of a slider on a frame guide along the guide's line through its own point (the ram's
+        # D above its block C): its path is that line, numbered already — its numbers stood beside
+        # C's extreme letters («C″ 2, 10», review 62 F6)
+        # (a centre of mass keeps its path: the lab draws the S's; a yoke's rod too, its own drawing)
+        along = link.slides_on is not None and mech.guides[link.slides_on].body == FRAME and bool(link.joints)
         out += [p for p in link.local if p not in joints and p not in mech.frame and p not in out
-                and p != next(iter(link.local))]
+                and p != first and not (along and p != link.com and not p.startswith("S")
+                                        and abs((link.local[p] - link.local[first]).imag) < 1e-9)]
     return tuple(out)
 
 

@@ -142,6 +142,30 @@ def yoke_guide(mech, name: str):
     return None
 
 
+def wedge_body(a: complex, b: complex, ref: complex, u_slide: complex) -> list[complex]:
+    """A wedge whose inclined face (its slot, from ``a`` to ``b``) runs through its own joint (the
+    wedge press's wedge 3: the face through B, review 62) drawn as the textbook's triangle resting on
+    its guide (the line through ``ref`` along ``u_slide``, the wedge's joint on it): the face from
+    where it meets that line to its end farther from it, that end's perpendicular down to the line and
+    the base back along it — a closed outline (mm), [P, far, foot, P]; a face not crossing the line
+    between its ends is closed by both ends' perpendiculars (a plate). [] for a face along the line."""
+    u = (b - a) / abs(b - a)
+
+    def off(z: complex) -> float:
+        return ((z - ref) * u_slide.conjugate()).imag
+
+    def foot(z: complex) -> complex:
+        return ref + ((z - ref) * u_slide.conjugate()).real * u_slide
+
+    if abs((u * u_slide.conjugate()).imag) < 1e-9:
+        return []
+    far, near = (b, a) if abs(off(b)) >= abs(off(a)) else (a, b)
+    if off(far) * off(near) <= 0.0:          # the face crosses the guide's line: a triangle
+        p = rod_crossing(ref, u_slide, a, u)
+        return [p, far, foot(far), p]
+    return [near, far, foot(far), foot(near), near]
+
+
 def rod_crossing(ref: complex, u_rod: complex, base: complex, u_slot: complex) -> complex:
     """Where a yoke's slot line (through ``base`` along ``u_slot``) crosses its rod's axis (through
     ``ref`` along ``u_rod``): base + t·u_slot with (base + t·u_slot − ref) × u_rod = 0,

@@ -496,6 +496,9 @@ def dimensions_table(st: Study, mu_l: float, lang: str, n: int = 3, precision: f
             rows.append([label, deg, deg])
         else:
             rows.append([label, written(value, real, lang), written(lay_off(value / mu_l, precision), ruler, lang)])
+    for k, deg in wedge_angles(st):     # a wedge's inclined face: a given of the scheme (review 62)
+        rows.append([f"α_{{{k}}}", f"{num(deg, lang)}°", f"{num(deg, lang)}°"])
+        notes.append(w('dims wedge angle', n=k))
     for point, deg in guide_angles(st):     # an inclined guide's angle: an input of the scheme as its distance is
         rows.append([w('dims guide angle', point=_pivot_name(point)), f"{num(deg, lang)}°", f"{num(deg, lang)}°"])
     given = {label for label, _, _ in yoke_dimensions(st)}
@@ -530,6 +533,27 @@ def guide_angles(st: Study) -> list[tuple[str, float]]:
         if point is None or min(deg % 90.0, 90.0 - deg % 90.0) < 1e-6:
             continue
         out.append((point, deg))
+    return out
+
+
+def wedge_angles(st: Study) -> list[tuple[int, float]]:
+    """A wedge's given angle: a link sliding on a guide that carries the slot a block slides in and is
+    no yoke (``linkshape.yoke_guide``: its slot shallower than a yoke's) — the wedge press's wedge 3,
+    its inclined face at α3 to its own guide — as (the link's number, α in degrees, 0 … 90: the
+    acute angle between the face and the guide, as the textbook gives a wedge's angle)."""
+    import math
+
+    from graphplan.model.linkshape import yoke_guide
+    mech = st.mech
+    out = []
+    for name, link in mech.links.items():
+        if link.slides_on is None or yoke_guide(mech, name) is not None:
+            continue
+        carried = [mech.guides[o.slides_on] for o in mech.links.values()
+                   if o.slides_on is not None and mech.guides[o.slides_on].body == name]
+        if carried:
+            deg = math.degrees(carried[0].angle) % 180.0
+            out.append((link.number, round(min(deg, 180.0 - deg), 6)))
     return out
 
 

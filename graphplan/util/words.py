@@ -278,6 +278,8 @@ WORDS: dict[str, tuple[str, str]] = {
     "kin subtitle": ('Кінематичний аналіз', 'Kinematic analysis'),
     "kin dims yoke angle": ("α_{{{n}}} — кут паза ланки {n} до напрямної її штока",
                             "α_{{{n}}}: the angle of link {n}'s slot to its rod's guide"),
+    "kin dims wedge angle": ("α_{{{n}}} — кут похилої грані клина {n} до його напрямної",
+                             "α_{{{n}}}: the angle of the wedge {n}'s inclined face to its guide"),
     "kin dims yoke": ("α_{{{n}}} — кут паза ланки {n} до напрямної її штока; e_{{{n}}} — від {d} до осі паза вздовж штока",
                       "α_{{{n}}}: the angle of link {n}'s slot to its rod's guide; e_{{{n}}}: from {d} to the slot's line along the rod"),
     "kin dims": ('Таблиця {n}. Розміри ланок', 'Table {n}. Dimensions of the links'),
