@@ -215,8 +215,9 @@ def pack(units: Sequence[Sequence[Node]], tables: Sequence[Leaf], notes: Leaf | 
         least = min(share(last), share(fresh))
         drawn = [s for s in last.spots if not s.fixed]
         for k in range(1, len(drawn) - 1):
-            if not all(s.alts for s in drawn[-k:]) or isinstance(drawn[-k - 1].node, Grid) and isinstance(drawn[-k].node, Grid):
-                break          # (the hodographs' grid split over two sheets by its own rule: kept together here)
+            split_grid = isinstance(drawn[-k - 1].node, Grid) and isinstance(drawn[-k].node, Grid)
+            if split_grid or not all(s.alts for s in drawn[-k:]):
+                break          # (the hodographs' grid split in two parts by its own rule: kept on one sheet)
             kept = sheet(n)
             for s in drawn[:-k]:
                 kept.put(Spot(s.node, s.x, s.d, s.w, s.h, s.fixed, s.alts))
