@@ -88,9 +88,10 @@ def test_link62_a2_tables_do_not_stand_alone_on_their_sheet():
 
 
 def test_gate_a3_keeps_its_hodographs_together_and_no_drawing_alone():
-    """The gate's A3 set: its hodographs split over two rows of sheet 4 beside the resistance chart;
-    moving them to the tables would split them over two sheets or leave the chart alone — the set is
-    packed as before (the tables' sheet stays; see report_sets62.md for what a teacher marks there)."""
+    """The gate's A3 set at the sizes main planned: its hodographs in two parts on sheet 4 beside the
+    resistance chart; moving them to the tables would split them over two sheets or leave the chart
+    alone — at these sizes the rule declines (the set search, packing with it, then finds the gate's
+    set on 4 sheets, its hodographs over the tables: report_sets62.md)."""
     sheets, names, leaves, tabs = _packed(GATE_A3, GATE_A3_TABLES, GATE_A3_NOTES, A3_REGION, A3_FIRST, A3_LATER,
                                           False)
     assert len(sheets) == 5
