@@ -64,7 +64,7 @@ def diagram_options(st: Study, k: float | tuple[float, float] = 1.0, positions: 
     from graphplan.graphic.redraw import redraw
     key = (repr(st.mech), k, positions, precision, room, floor)
     if key not in _REDRAWN:
-        if len(_REDRAWN) >= 32:
+        if len(_REDRAWN) >= 128:       # a set searches some 35 sizes (the A3 gate: 34, two of them redrawn twice at 32)
             _REDRAWN.pop(next(iter(_REDRAWN)))
         first = first_options(st, k, positions)
         dg = st.mech.task.diagram
@@ -98,6 +98,42 @@ SAME = 1.05       # … redrawn for its errors at the positions alone (the first
 
 
 _LAST: list = []      # the last (key, diagrams) drawn for a candidate's size (``_drawn``)
+_S_RANGE: dict[tuple, tuple] = {}     # (id(st), point) → (a weak reference to st, unit, s_range): what μs is chosen from
+_MEASURED: dict[tuple, tuple] = {}    # (what, the drawing's key) → (a weak reference to st, a block's size or the
+_MEASURED_KEPT = 4096                 # spans: ``_measured``) — a study's id is its own while it lives
+_PLAIN = (int, float, str, bool, type(None))
+
+
+def _drawing_key(st: Study, options: dict, precision: float) -> tuple | None:
+    """What a drawing with ``options`` is made of: its options with the s height as the μs it chooses
+    (``choose_mu_s``: ``chord_diagrams`` reads ``height`` through μs alone — the same construction, the
+    same block, to the last bit), or None where an option is not a plain value. A set's heights are
+    searched in 0.05 steps (``kinlayout.tallest``), and each height's redrawing measures the same
+    candidates over the few μs of the series they choose (review 61: the A3 gate's set spent 70 % of
+    its CPU measuring candidates, most of them measured before at another height)."""
+    if not all(isinstance(v, _PLAIN) or (isinstance(v, tuple) and all(isinstance(x, _PLAIN) for x in v))
+               for v in options.values()):
+        return None
+    opts = dict(options)
+    height = opts.get("height")
+    if height is not None:
+        from graphplan.graphic.diagrams import choose_mu_s
+        rk = (id(st), opts.get("point"))
+        hit = _S_RANGE.get(rk)
+        if hit is None or hit[0]() is not st:
+            import weakref
+
+            import numpy as np
+
+            from graphplan.graphic.diagrams import CYCLE, exact_motion, resolve_output
+            out, _, _, _, unit = resolve_output(st, opts.get("point"))
+            s_c = exact_motion(st, out, np.arange(CYCLE + 1) * 360.0 / CYCLE)[0]
+            if len(_S_RANGE) >= 64:
+                _S_RANGE.pop(next(iter(_S_RANGE)))
+            hit = _S_RANGE[rk] = (weakref.ref(st), unit, float(np.ptp(s_c)))
+        _, unit, s_range = hit
+        opts["height"] = ("mu_s", choose_mu_s(st, unit, s_range, height, bool(opts.get("fit", False))))
+    return (id(st), tuple(sorted((k, repr(v)) for k, v in opts.items())), precision)
 
 
 def _drawn(st: Study, options: dict, precision: float):
@@ -105,21 +141,37 @@ def _drawn(st: Study, options: dict, precision: float):
     plain values: a candidate's block (``_block_size``) and its spans (``_spans``) are measured off
     one construction, not two (redraw measures some 300 candidates on the shaper's A3 set)."""
     from graphplan.graphic.diagrams import chord_diagrams
-    plain = (int, float, str, bool, type(None))
-    if not all(isinstance(v, plain) or (isinstance(v, tuple) and all(isinstance(x, plain) for x in v))
-               for v in options.values()):
+    key = _drawing_key(st, options, precision)
+    if key is None:
         return chord_diagrams(st, precision=precision, **options)
-    key = (id(st), tuple(sorted((k, repr(v)) for k, v in options.items())), precision)
     if not _LAST or _LAST[0][0] != key:
         _LAST[:] = [(key, chord_diagrams(st, precision=precision, **options))]     # holds st: its id stays its
     return _LAST[0][1]
 
 
+def _measured(what: str, st: Study, options: dict, precision: float, make):
+    """``make()`` once per drawing (``_drawing_key``): its block's size, its spans."""
+    key = _drawing_key(st, options, precision)
+    if key is None:
+        return make()
+    key = (what,) + key
+    hit = _MEASURED.get(key)
+    if hit is None or hit[0]() is not st:
+        import weakref
+        if len(_MEASURED) >= _MEASURED_KEPT:
+            _MEASURED.pop(next(iter(_MEASURED)))
+        hit = _MEASURED[key] = (weakref.ref(st), make())
+    return hit[1]
+
+
 def _spans(st: Study, options: dict, precision: float) -> tuple[float, float]:
     """The v and a diagrams drawn with ``options``: each one's height with its axis, mm."""
     import numpy as np
-    r = _drawn(st, options, precision).drawn
-    return tuple(float(np.ptp(np.append(x, 0.0))) for x in (r.v, r.a))
+
+    def make():
+        r = _drawn(st, options, precision).drawn
+        return tuple(float(np.ptp(np.append(x, 0.0))) for x in (r.v, r.a))
+    return _measured("spans", st, options, precision, make)
 
 
 def _block_size(st: Study, options: dict, precision: float) -> tuple[float, float]:
@@ -130,13 +182,16 @@ def _block_size(st: Study, options: dict, precision: float) -> tuple[float, floa
 
     from graphplan.drawing.diagrams import draw
     from graphplan.util.words import LANGS
-    d = _drawn(st, options, precision)
-    sizes = []
-    for lang in LANGS:
-        b = captioned(draw(d if d.lang == lang else replace(d, lang=lang), lang),
-                      word("kin diagrams", lang)).bounds()
-        sizes.append((b[2] - b[0], b[3] - b[1]))
-    return max(w for w, _ in sizes), max(h for _, h in sizes)
+
+    def make():
+        d = _drawn(st, options, precision)
+        sizes = []
+        for lang in LANGS:
+            b = captioned(draw(d if d.lang == lang else replace(d, lang=lang), lang),
+                          word("kin diagrams", lang)).bounds()
+            sizes.append((b[2] - b[0], b[3] - b[1]))
+        return max(w for w, _ in sizes), max(h for _, h in sizes)
+    return _measured("block", st, options, precision, make)
 
 
 def first_options(st: Study, k: float | tuple[float, ...] = 1.0, positions: int | None = None) -> dict:
