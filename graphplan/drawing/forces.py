@@ -54,8 +54,8 @@ class Labeler:
         self.asked: list[LabelRequest] = []
 
     def place(self, anchor: complex, text: str, size: float = 2.5, prefer: complex = 1j,
-              step: str = "") -> None:
-        self.asked.append(LabelRequest(anchor, text, prefer, size, step=step))
+              step: str = "", rivals: tuple = ()) -> None:
+        self.asked.append(LabelRequest(anchor, text, prefer, size, step=step, rivals=rivals))
 
     def done(self) -> Record:
         place_labels(self.rec, self.asked, layer="labels")
@@ -585,6 +585,7 @@ def _name_side(z: complex, arrows: list[tuple[complex, complex]], links: list[tu
 
 
 BLOCK_HALF = 2.5   # a slider's block: 8 × 5 mm
+SHOWN_MM = 10.0    # an arrow from a slider's block's centre: at least this much of it out of the block
 
 
 def _block(rec: Record, z: complex, g: complex, step: str) -> None:
@@ -758,6 +759,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     supports: list[complex] = []
     guides: list[tuple[complex, complex]] = []      # a slider's fixed guide: (the block's centre, direction)
     blocks: list[tuple[complex, complex]] = []      # the sliders' blocks' edges
+    block_at: list[tuple[complex, complex]] = []    # … their centres and guides' directions
     bushings: list[tuple[complex, complex]] = []    # a yoke's rod's bushing: (middle, unit)
     from graphplan.model.linkshape import yoke_guide
     for link in gp.links:
@@ -783,6 +785,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             u_, n_ = _unit(g) * 4.0, _unit(g) * BLOCK_HALF * 1j     # its edges, kept clear by the arms
             corners = [z - u_ - n_, z + u_ - n_, z + u_ + n_, z - u_ + n_]
             blocks += list(zip(corners, corners[1:] + corners[:1]))
+            block_at.append((z, _unit(g)))
             if guide.body == FRAME:
                 guides.append((z, g))
         for p in lk.joints:
@@ -1029,10 +1032,24 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         drawn.append((z, ca, cb))
         return ca, cb
 
+    def out_of_block(z: complex, u: complex, length: float) -> float:
+        """An arrow leaving a slider's block from its centre: at least ``SHOWN_MM`` of it out of the
+        block (a 4 mm head and a shaft behind it longer than the head) — LINK62's G4, 11 mm from the
+        block's pin B, showed a 7 mm stub below the block, 3 mm of shaft behind its head, and its
+        name went out on a 25 mm leader; its Φ3 showed 5 mm past the block's end, mostly head. An
+        arrow at a pushing end (arriving at the point) is laid by ``lay`` as before."""
+        for w, g in block_at:
+            if abs(w - z) < 0.5:
+                along, across = abs(dot(u, g)), abs(dot(u, 1j * g))
+                inside = min(4.0 / along if along > 1e-9 else math.inf,
+                             BLOCK_HALF / across if across > 1e-9 else math.inf)
+                return max(length, inside + SHOWN_MM)
+        return length
+
     for f in _longest_first(forces, biggest):
         z = f.at / mu
         u = _unit(f.force)
-        a, b = span[f.name] = lay(f.name, z, u, _arrow_length(abs(f.force), biggest))
+        a, b = span[f.name] = lay(f.name, z, u, out_of_block(z, u, _arrow_length(abs(f.force), biggest)))
         rec.vector(_pt(a), _pt(b), role="absolute", layer="vectors", step=step, text=f.name)
         near_end = a if abs(a - z) < abs(b - z) else b
         if f.name in slid and abs(near_end - z) > 0.5:
@@ -1149,7 +1166,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         if not v:
             continue
         u = _unit(v)
-        a, b = span[m.name] = lay(m.name, z, u, _arrow_length(m.value, biggest))
+        a, b = span[m.name] = lay(m.name, z, u, out_of_block(z, u, _arrow_length(m.value, biggest)))
         rec.vector(_pt(a), _pt(b), role="result", layer="vectors", step=step, text=m.name)
         labels.append((a, m.name, -u) if abs(dot(b - z, u)) < 0.5 else (b, m.name, u))
         if inward and m.line is not None:
@@ -1223,14 +1240,21 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         pin = complex(kin.bodies[ck.link].at(mech.links[ck.link].local[ck.pin])[0][0]) / mu
         _omega(rec, lab, omega_at, mech.omega1,
                omega_mid if omega_mid is not None else cmath.phase(omega_at - pin))
+    # a point's letter reads as its own: nearer it than any other point lettered near it (LINK62's
+    # II(4-5): «B», pushed off the pin by the block round it, stood nearer S5's dot 9 mm down the
+    # lever than B's circle, and a reader took the dot for B)
+    lettered = [z for z, _ in names] + [z for z, name in centres if name]
+
+    def rivals(z: complex) -> tuple:
+        return tuple(w for w in lettered if 0.5 < abs(w - z) < RIVAL_MM)
     for z, name in names:
         side = next((v for c, v in clear.items() if abs(c - z) < 0.5), None)
         if side is None:
             side = _name_side(z, [(t, h) for w, t, h in drawn if abs(w - z) < 0.5], drawn_links)
-        lab.place(z, indexed(name), 3.5, side, step)
+        lab.place(z, indexed(name), 3.5, side, step, rivals(z))
     for z, name in centres:
         if name:
-            lab.place(z, indexed(name), 3.5, -1 - 1j, step)
+            lab.place(z, indexed(name), 3.5, -1 - 1j, step, rivals(z))
     # the arms' letters by their arms first, then the forces' names — each read as its own arrow's
     # (``place_owned_line``), none on a leader across a link: named after the arms, a couple's name
     # took the only leader out of a crowded S2 and h_Φ2's crossed it (an X)
@@ -1300,6 +1324,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                 continue
             break
     return rec
+
+
+RIVAL_MM = 15.0     # a point's letter on a group stands nearer its point than any other lettered point this near
 
 
 ONE_ARM_MM = 1.0    # two arms from one point whose feet lie this near (two ruler steps) are drawn as one line
