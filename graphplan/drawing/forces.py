@@ -1038,18 +1038,33 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         block's pin B, showed a 7 mm stub below the block, 3 mm of shaft behind its head, and its
         name went out on a 25 mm leader; its Φ3 showed 5 mm past the block's end, mostly head. An
         arrow at a pushing end (arriving at the point) is laid by ``lay`` as before."""
-        for w, g in block_at:
-            if abs(w - z) < 0.5:
-                along, across = abs(dot(u, g)), abs(dot(u, 1j * g))
-                inside = min(4.0 / along if along > 1e-9 else math.inf,
-                             BLOCK_HALF / across if across > 1e-9 else math.inf)
-                return max(length, inside + SHOWN_MM)
-        return length
+        inside = in_block(z, u)
+        return length if inside is None else max(length, inside + SHOWN_MM)
+
+    def in_block(z: complex, u: complex) -> float | None:
+        """How far the line from ``z`` along ``u`` runs inside the blocks drawn round ``z`` (None: no
+        block there; at a pin of two blocks, the slider's and the rocker's, the farther edge)."""
+        ins = [min(4.0 / abs(dot(u, g)) if abs(dot(u, g)) > 1e-9 else math.inf,
+                   BLOCK_HALF / abs(dot(u, 1j * g)) if abs(dot(u, 1j * g)) > 1e-9 else math.inf)
+               for w, g in block_at if abs(w - z) < 0.5]
+        return max(ins) if ins else None
+
+    def to_block(z: complex, u: complex, a: complex, b: complex) -> tuple[complex, complex]:
+        """An arrow laid arriving at a slider's block's centre (the pushing arrow): drawn back along
+        its line until its head touches the block's edge — its head inside the block was hidden by
+        the block's outline (LINK62's scheme: G4 down onto B, Φ4 along the guide onto it)."""
+        inside = in_block(z, u)
+        if inside is None or abs(b - z) > 0.5 or abs(a - z) < 0.5:
+            return a, b
+        back = (inside + 0.3) * u
+        a, b = a - back, b - back
+        drawn[-1] = (z, a, b)
+        return a, b
 
     for f in _longest_first(forces, biggest):
         z = f.at / mu
         u = _unit(f.force)
-        a, b = span[f.name] = lay(f.name, z, u, out_of_block(z, u, _arrow_length(abs(f.force), biggest)))
+        a, b = span[f.name] = to_block(z, u, *lay(f.name, z, u, out_of_block(z, u, _arrow_length(abs(f.force), biggest))))
         rec.vector(_pt(a), _pt(b), role="absolute", layer="vectors", step=step, text=f.name)
         near_end = a if abs(a - z) < abs(b - z) else b
         if f.name in slid and abs(near_end - z) > 0.5:
@@ -1166,7 +1181,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         if not v:
             continue
         u = _unit(v)
-        a, b = span[m.name] = lay(m.name, z, u, out_of_block(z, u, _arrow_length(m.value, biggest)))
+        a, b = span[m.name] = to_block(z, u, *lay(m.name, z, u, out_of_block(z, u, _arrow_length(m.value, biggest))))
         rec.vector(_pt(a), _pt(b), role="result", layer="vectors", step=step, text=m.name)
         labels.append((a, m.name, -u) if abs(dot(b - z, u)) < 0.5 else (b, m.name, u))
         if inward and m.line is not None:
