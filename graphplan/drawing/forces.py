@@ -1121,6 +1121,13 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             # hatching 10 mm off, M_зр's arc 0.24 mm from it)
             lines_by = [(p, q) for _, p, q in drawn] + drawn_links
             propped = [ab for w, d_ in support_at.items() if abs(w - z) >= 0.5 for ab in support_strokes(w, d_)]
+            # … and from another link passing where its letter goes, beyond the arc (the gate's scheme:
+            # «M_b» set past its arc across the coupler AB 17 mm above O1 read as the coupler's)
+            beyond = [(p, q) for p, q in drawn_links if _to_segment(z, p, q) > 0.5]
+
+            def lettered(r_: float) -> list[float]:
+                return _near_arrows(z, beyond, r_ + LETTER / 2 + 1.0, LETTER / 2 + 2.5)
+            taken += lettered(BALANCING_R_MM)
             away = _free_direction_clear(taken + _near_arrows(z, lines_by, BALANCING_R_MM), z,
                                          BALANCING_R_MM, 80.0, propped)
             r = BALANCING_R_MM
@@ -1129,7 +1136,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                     abs((away - w1 + math.pi) % (2 * math.pi) - math.pi) < math.radians(150.0)
                     or _arc_near(z, r, away, 80.0, ends) < ARC_CLEAR_MM):
                 r = OMEGA_R_MM + 5.0     # beside ω1's arc: wider, so that the two do not read as one
-                away = _free_direction_clear(taken + _near_arrows(z, lines_by, r), z, r, 80.0, propped)
+                away = _free_direction_clear(taken + lettered(r) + _near_arrows(z, lines_by, r), z, r, 80.0, propped)
             mid = _moment_arc(rec, z, f.couple, away, step, r=r, span=80.0)
             labels.append((mid, f.name, mid - z))
             clear[z] = z - mid          # the pivot's letter on the side away from the arc
