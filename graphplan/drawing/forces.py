@@ -1041,6 +1041,32 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         inside = in_block(z, u)
         return length if inside is None else max(length, inside + SHOWN_MM)
 
+    def lay_at(name: str, z: complex, u: complex, length: float) -> tuple[complex, complex]:
+        """``lay``, an arrow leaving a block's centre then lengthened (``out_of_block``) where the
+        longer one still leaves the point on its own line (not set a lane aside); an arrow laid
+        arriving at the centre is drawn back to the block's edge instead (``to_block``)."""
+        def state():
+            return list(drawn), dict(lanes), list(set_aside), set(slid)
+
+        def restore(st) -> None:
+            drawn[:] = st[0]
+            lanes.clear()
+            lanes.update(st[1])
+            set_aside[:] = st[2]
+            slid.clear()
+            slid.update(st[3])
+        before = state()
+        a, b = lay(name, z, u, length)
+        longer = out_of_block(z, u, length)
+        if longer > length + 1e-9 and abs(a - z) < 0.5 and name not in lanes:
+            kept, after = (a, b), state()
+            restore(before)
+            a, b = lay(name, z, u, longer)
+            if name in lanes or abs(a - z) >= 0.5:
+                restore(after)
+                a, b = kept
+        return to_block(z, u, a, b)
+
     def in_block(z: complex, u: complex) -> float | None:
         """How far the line from ``z`` along ``u`` runs inside the blocks drawn round ``z`` (None: no
         block there; at a pin of two blocks, the slider's and the rocker's, the farther edge)."""
@@ -1064,7 +1090,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     for f in _longest_first(forces, biggest):
         z = f.at / mu
         u = _unit(f.force)
-        a, b = span[f.name] = to_block(z, u, *lay(f.name, z, u, out_of_block(z, u, _arrow_length(abs(f.force), biggest))))
+        a, b = span[f.name] = lay_at(f.name, z, u, _arrow_length(abs(f.force), biggest))
         rec.vector(_pt(a), _pt(b), role="absolute", layer="vectors", step=step, text=f.name)
         near_end = a if abs(a - z) < abs(b - z) else b
         if f.name in slid and abs(near_end - z) > 0.5:
@@ -1188,7 +1214,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         if not v:
             continue
         u = _unit(v)
-        a, b = span[m.name] = to_block(z, u, *lay(m.name, z, u, out_of_block(z, u, _arrow_length(m.value, biggest))))
+        a, b = span[m.name] = lay_at(m.name, z, u, _arrow_length(m.value, biggest))
         rec.vector(_pt(a), _pt(b), role="result", layer="vectors", step=step, text=m.name)
         labels.append((a, m.name, -u) if abs(dot(b - z, u)) < 0.5 else (b, m.name, u))
         if inward and m.line is not None:
