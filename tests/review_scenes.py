@@ -9906,3 +9906,99 @@ delta = 0.05
 efficiency = 0.9
 synchronous_rpm = 1000
 '''
+
+
+
+# frc62 (stop 62): a new force-sheet mechanism — a crank-slider whose triangular rod ABE drives a rocker O2C
+# through EC (I(0-1) -> II(2-3) RRP -> II(4-5) RRR), a force on the slider and a moment on the rocker.
+FRC62_TRIANGLE_ROD = '''
+# frc62 (stop 62): a crank-slider whose triangular connecting rod ABE drives, from its third vertex E, a rod EC to a
+# rocker O2C (a textbook six-bar of a feed drive): I(0-1) -> II(2-3) RRP -> II(4-5) RRR; the crank ccw at 150 rpm;
+# 500 N against the slider over its working stroke and a 25 N·m resistance moment on the rocker; masses by length.
+title = "Шестиланковий механізм з трикутним шатуном"
+title_en = "Six-bar mechanism with a triangular connecting rod"
+designation = "ТММ.КП.62.100"
+
+[sheet]
+student = "Помічник Ф. Ф."
+teacher = "Викладач В. В."
+group = "МБ-62"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O2 = [0.16, 0.22]
+
+[frame.guides]
+x = { through = [0, -0.02], angle_deg = 0, title_uk = "повзуна", title_en = "of the slider" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.05
+rpm = 150
+direction = "ccw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "ABE"
+number = 2
+joints = ["A", "B"]
+length = 0.20
+shape = { E = [0.10, 0.06] }
+points = { S2 = 0.5 }
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "x"
+mass = 3
+
+[[link]]
+name = "EC"
+number = 4
+joints = ["E", "C"]
+length = 0.14
+points = { S4 = 0.5 }
+
+[[link]]
+name = "O2C"
+number = 5
+joints = ["O2", "C"]
+length = 0.12
+points = { S5 = 0.5 }
+
+[branch]
+B = 1
+C = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [3]
+force_phi_deg = 60
+
+[loads]
+g = 9.81
+mass_per_length = 20
+inertia_factor = 0.1
+
+[[force]]
+point = "B"
+magnitude = 500
+stroke = "working"
+direction = "oppose"
+
+[[moment]]
+link = 5
+magnitude = 25
+stroke = "working"
+direction = "oppose"
+
+[dynamics]
+delta = 0.05
+efficiency = 0.85
+synchronous_rpm = 1500
+'''

@@ -54,8 +54,8 @@ class Labeler:
         self.asked: list[LabelRequest] = []
 
     def place(self, anchor: complex, text: str, size: float = 2.5, prefer: complex = 1j,
-              step: str = "") -> None:
-        self.asked.append(LabelRequest(anchor, text, prefer, size, step=step))
+              step: str = "", rivals: tuple = ()) -> None:
+        self.asked.append(LabelRequest(anchor, text, prefer, size, step=step, rivals=rivals))
 
     def done(self) -> Record:
         place_labels(self.rec, self.asked, layer="labels")
@@ -590,6 +590,7 @@ def _name_side(z: complex, arrows: list[tuple[complex, complex]], links: list[tu
 
 
 BLOCK_HALF = 2.5   # a slider's block: 8 × 5 mm
+SHOWN_MM = 10.0    # an arrow from a slider's block's centre: at least this much of it out of the block
 
 
 def _block(rec: Record, z: complex, g: complex, step: str) -> None:
@@ -766,6 +767,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
     supports: list[complex] = []
     guides: list[tuple[complex, complex]] = []      # a slider's fixed guide: (the block's centre, direction)
     blocks: list[tuple[complex, complex]] = []      # the sliders' blocks' edges
+    block_at: list[tuple[complex, complex]] = []    # … their centres and guides' directions
     bushings: list[tuple[complex, complex]] = []    # a yoke's rod's bushing: (middle, unit)
     from graphplan.model.linkshape import yoke_guide
     for link in gp.links:
@@ -791,6 +793,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             u_, n_ = _unit(g) * 4.0, _unit(g) * BLOCK_HALF * 1j     # its edges, kept clear by the arms
             corners = [z - u_ - n_, z + u_ - n_, z + u_ + n_, z - u_ + n_]
             blocks += list(zip(corners, corners[1:] + corners[:1]))
+            block_at.append((z, _unit(g)))
             if guide.body == FRAME:
                 guides.append((z, g))
         for p in lk.joints:
@@ -1037,10 +1040,65 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         drawn.append((z, ca, cb))
         return ca, cb
 
+    def out_of_block(z: complex, u: complex, length: float) -> float:
+        """An arrow leaving a slider's block from its centre: at least ``SHOWN_MM`` of it out of the
+        block (a 4 mm head and a shaft behind it longer than the head) — LINK62's G4, 11 mm from the
+        block's pin B, showed a 7 mm stub below the block, 3 mm of shaft behind its head, and its
+        name went out on a 25 mm leader; its Φ3 showed 5 mm past the block's end, mostly head. An
+        arrow at a pushing end (arriving at the point) is laid by ``lay`` as before."""
+        inside = in_block(z, u)
+        return length if inside is None else max(length, inside + SHOWN_MM)
+
+    def lay_at(name: str, z: complex, u: complex, length: float) -> tuple[complex, complex]:
+        """``lay``, an arrow leaving a block's centre then lengthened (``out_of_block``) where the
+        longer one still leaves the point on its own line (not set a lane aside); an arrow laid
+        arriving at the centre is drawn back to the block's edge instead (``to_block``)."""
+        def state():
+            return list(drawn), dict(lanes), list(set_aside), set(slid)
+
+        def restore(st) -> None:
+            drawn[:] = st[0]
+            lanes.clear()
+            lanes.update(st[1])
+            set_aside[:] = st[2]
+            slid.clear()
+            slid.update(st[3])
+        before = state()
+        a, b = lay(name, z, u, length)
+        longer = out_of_block(z, u, length)
+        if longer > length + 1e-9 and abs(a - z) < 0.5 and name not in lanes:
+            kept, after = (a, b), state()
+            restore(before)
+            a, b = lay(name, z, u, longer)
+            if name in lanes or abs(a - z) >= 0.5:
+                restore(after)
+                a, b = kept
+        return to_block(z, u, a, b)
+
+    def in_block(z: complex, u: complex) -> float | None:
+        """How far the line from ``z`` along ``u`` runs inside the blocks drawn round ``z`` (None: no
+        block there; at a pin of two blocks, the slider's and the rocker's, the farther edge)."""
+        ins = [min(4.0 / abs(dot(u, g)) if abs(dot(u, g)) > 1e-9 else math.inf,
+                   BLOCK_HALF / abs(dot(u, 1j * g)) if abs(dot(u, 1j * g)) > 1e-9 else math.inf)
+               for w, g in block_at if abs(w - z) < 0.5]
+        return max(ins) if ins else None
+
+    def to_block(z: complex, u: complex, a: complex, b: complex) -> tuple[complex, complex]:
+        """An arrow laid arriving at a slider's block's centre (the pushing arrow): drawn back along
+        its line until its head touches the block's edge — its head inside the block was hidden by
+        the block's outline (LINK62's scheme: G4 down onto B, Φ4 along the guide onto it)."""
+        inside = in_block(z, u)
+        if inside is None or abs(b - z) > 0.5 or abs(a - z) < 0.5:
+            return a, b
+        back = (inside + 0.3) * u
+        a, b = a - back, b - back
+        drawn[-1] = (z, a, b)
+        return a, b
+
     for f in _longest_first(forces, biggest):
         z = f.at / mu
         u = _unit(f.force)
-        a, b = span[f.name] = lay(f.name, z, u, _arrow_length(abs(f.force), biggest))
+        a, b = span[f.name] = lay_at(f.name, z, u, _arrow_length(abs(f.force), biggest))
         rec.vector(_pt(a), _pt(b), role="absolute", layer="vectors", step=step, text=f.name)
         near_end = a if abs(a - z) < abs(b - z) else b
         if f.name in slid and abs(near_end - z) > 0.5:
@@ -1097,6 +1155,13 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
             # hatching 10 mm off, M_зр's arc 0.24 mm from it)
             lines_by = [(p, q) for _, p, q in drawn] + drawn_links
             propped = [ab for w, d_ in support_at.items() if abs(w - z) >= 0.5 for ab in support_strokes(w, d_)]
+            # … and from another link passing where its letter goes, beyond the arc (the gate's scheme:
+            # «M_b» set past its arc across the coupler AB 17 mm above O1 read as the coupler's)
+            beyond = [(p, q) for p, q in drawn_links if _to_segment(z, p, q) > 0.5]
+
+            def lettered(r_: float) -> list[float]:
+                return _near_arrows(z, beyond, r_ + LETTER / 2 + 1.0, LETTER / 2 + 2.5)
+            taken += lettered(BALANCING_R_MM)
             away = _free_direction_clear(taken + _near_arrows(z, lines_by, BALANCING_R_MM), z,
                                          BALANCING_R_MM, 80.0, propped)
             r = BALANCING_R_MM
@@ -1105,7 +1170,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                     abs((away - w1 + math.pi) % (2 * math.pi) - math.pi) < math.radians(150.0)
                     or _arc_near(z, r, away, 80.0, ends) < ARC_CLEAR_MM):
                 r = OMEGA_R_MM + 5.0     # beside ω1's arc: wider, so that the two do not read as one
-                away = _free_direction_clear(taken + _near_arrows(z, lines_by, r), z, r, 80.0, propped)
+                away = _free_direction_clear(taken + lettered(r) + _near_arrows(z, lines_by, r), z, r, 80.0, propped)
             mid = _moment_arc(rec, z, f.couple, away, step, r=r, span=80.0)
             labels.append((mid, f.name, mid - z))
             clear[z] = z - mid          # the pivot's letter on the side away from the arc
@@ -1157,7 +1222,7 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         if not v:
             continue
         u = _unit(v)
-        a, b = span[m.name] = lay(m.name, z, u, _arrow_length(m.value, biggest))
+        a, b = span[m.name] = lay_at(m.name, z, u, _arrow_length(m.value, biggest))
         rec.vector(_pt(a), _pt(b), role="result", layer="vectors", step=step, text=m.name)
         labels.append((a, m.name, -u) if abs(dot(b - z, u)) < 0.5 else (b, m.name, u))
         if inward and m.line is not None:
@@ -1232,14 +1297,21 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
         pin = complex(kin.bodies[ck.link].at(mech.links[ck.link].local[ck.pin])[0][0]) / mu
         _omega(rec, lab, omega_at, mech.omega1,
                omega_mid if omega_mid is not None else cmath.phase(omega_at - pin))
+    # a point's letter reads as its own: nearer it than any other point lettered near it (LINK62's
+    # II(4-5): «B», pushed off the pin by the block round it, stood nearer S5's dot 9 mm down the
+    # lever than B's circle, and a reader took the dot for B)
+    lettered = [z for z, _ in names] + [z for z, name in centres if name]
+
+    def rivals(z: complex) -> tuple:
+        return tuple(w for w in lettered if 0.5 < abs(w - z) < RIVAL_MM)
     for z, name in names:
         side = next((v for c, v in clear.items() if abs(c - z) < 0.5), None)
         if side is None:
             side = _name_side(z, [(t, h) for w, t, h in drawn if abs(w - z) < 0.5], drawn_links)
-        lab.place(z, indexed(name), 3.5, side, step)
+        lab.place(z, indexed(name), 3.5, side, step, rivals(z))
     for z, name in centres:
         if name:
-            lab.place(z, indexed(name), 3.5, -1 - 1j, step)
+            lab.place(z, indexed(name), 3.5, -1 - 1j, step, rivals(z))
     # the arms' letters by their arms first, then the forces' names — each read as its own arrow's
     # (``place_owned_line``), none on a leader across a link: named after the arms, a couple's name
     # took the only leader out of a crowded S2 and h_Φ2's crossed it (an X)
@@ -1309,6 +1381,9 @@ def group_record(fp: ForcePlans, gp: GroupPlan, lang: str = "uk", omega_at: comp
                 continue
             break
     return rec
+
+
+RIVAL_MM = 15.0     # a point's letter on a group stands nearer its point than any other lettered point this near
 
 
 ONE_ARM_MM = 1.0    # two arms from one point whose feet lie this near (two ruler steps) are drawn as one line

@@ -2015,6 +2015,12 @@ def _placed_leaves(dr: ForceDrafter, nat: Natural, mu: dict[str, float]) -> dict
     """The drawings' cells at the plan's scales, a group drawn at its own μl (``_grown_groups``)
     in its own cell."""
     leaves = _leaves(nat, mu)
+    if leaves.get("hodographs"):
+        # the hodographs as drawn at their size (``hodograph_cells``), as the growth took them: the
+        # family's model, measured at the sizes drawn so far, read the compressor's grown to 2.0 as
+        # 65.4 mm wide where they are drawn 95.1 mm — and the drawings grown after them took their room
+        leaves["hodographs"] = [Leaf(x.name, *cell) for x, cell in
+                                zip(leaves["hodographs"], dr.hodograph_cells(mu["hodographs"]))]
     own = dict(group_scales(mu))
     if own:
         fam = nat.families["groups"]
