@@ -101,6 +101,8 @@ WORDS = {
                     "linear": "лінійний", "trapezoidal": "трапецеїдальний"},
            "phases": "фази: φ_п = {a}°, φ_вв = {b}°, φ_с = {c}°, φ_бв = {d}°",
            "radius": "R_0 найменший = {m} мм (графічно {g} мм, похибка {e} %); прийнято R_0 = {r} мм",
+           "radius_under": "R_0 найменший = {m} мм (графічно {g} мм, похибка {e} %); прийнято R_0 = {r} мм — "
+                           "точний найменший, округлений угору (графічний більший на похибку побудови)",
            "radius_given": "R_0 найменший = {m} мм (графічно {g} мм, похибка {e} %); задано R_0 = {r} мм",
            "radius_small": "R_0 найменший = {m} мм (графічно {g} мм, похибка {e} %); задано R_0 = {r} мм — менший "
                            "за найменший: кут тиску перевищує допустимий (*), слід прийняти R_0 ≥ {k} мм",
@@ -156,6 +158,8 @@ WORDS = {
                     "linear": "linear", "trapezoidal": "trapezoidal"},
            "phases": "phases: φ_{{rise}} = {a}°, φ_{{far}} = {b}°, φ_{{return}} = {c}°, φ_{{near}} = {d}°",
            "radius": "smallest R_0 = {m} mm (graphically {g} mm, error {e} %); R_0 taken = {r} mm",
+           "radius_under": "smallest R_0 = {m} mm (graphically {g} mm, error {e} %); R_0 taken = {r} mm — the exact "
+                           "smallest rounded up (the graphical one is over it by the construction's error)",
            "radius_given": "smallest R_0 = {m} mm (graphically {g} mm, error {e} %); R_0 given = {r} mm",
            "radius_small": "smallest R_0 = {m} mm (graphically {g} mm, error {e} %); R_0 given = {r} mm — below the "
                            "smallest: the pressure angle exceeds the allowed one (*); take R_0 ≥ {k} mm",
@@ -395,6 +399,11 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
     # a given R0 below the smallest said plainly, with the radius to take (review 57: a warning alone)
     small = doc.get("base_radius_given") and doc["base_radius_m"] < doc["base_radius_min_m"] * (1 - 1e-9)
     key = "radius_small" if small else "radius_given" if doc.get("base_radius_given") else "radius"
+    # the radius taken under the one read off the phase diagram (stop 62: CAM62 took 48 mm, the exact 47,889
+    # rounded up, under the graphical 48,12 — a teacher asks why the taken R0 is under the student's own
+    # smallest): the line says what it is rounded up from and why the drawn one is over it
+    if key == "radius" and g is not None and doc["base_radius_m"] < g * (1 - 1e-9):
+        key = "radius_under"
     lines.append(w[key].format(m=n(doc["base_radius_min_m"] * 1000, 5), g=n(None if g is None else g * 1000),
                                     k=math.ceil(doc["base_radius_min_m"] * 1000 - 1e-9),
                                     # to 0.01 %, as Table 1's δ (a teacher reads "−0,00805 %" as false precision)
