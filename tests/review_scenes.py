@@ -10002,3 +10002,62 @@ delta = 0.05
 efficiency = 0.85
 synchronous_rpm = 1500
 '''
+
+
+
+# gc62 (stop 62): a rocking roller follower turned clockwise, a cycloidal rise straight into a cosine return
+# (no far dwell) — concave stretches on the rise and the return, said in the notes.
+GC62_CAM = """\
+# gc62's own: a ROCKING roller follower, the cam CLOCKWISE, a cycloidal rise of 120° straight into a cosine
+# return of 90° (no far dwell), a near dwell of 150°; swing 20°, arm 100 mm, centre distance 120 mm, roller 9 mm.
+title = "Кулачковий механізм з коромисловим роликовим штовхачем без дальнього вистою (gc62)"
+title_en = "Cam with a rocking roller follower and no far dwell (gc62)"
+designation = "ТММ.КМ.62.200"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-62"
+organisation = "НУБіП України"
+
+[cam]
+follower = "rocking"
+swing_deg = 20
+arm = 0.1
+centre_distance = 0.12
+roller_radius = 0.009
+phases_deg = { rise = 120, dwell_far = 0, return = 90, dwell_near = 150 }
+laws = { rise = "cycloidal", return = "cosine" }
+pressure_angle_deg = { rise = 40, return = 45 }
+rpm = 150
+direction = "cw"
+divisions = 8
+"""
+
+# gc62 (stop 62): an equal-and-opposite shift pair 14/26 (x = ±0.3: αw = α, aw = a), m = 6 mm, and a type-A
+# train synthesised for u1H = 8, K = 3 (17/49/115 chosen; 18/54/126 exact but 10 % larger).
+GC62_GEARS = """\
+# gc62's own: an equal-and-opposite shift pair 14/26 (x1 = 0.3, x2 = −0.3: αw = α, aw = a), m = 6 mm, and a
+# type-A train synthesised for u1H = 8 with K = 3 planets, m = 3 mm, 960 rpm.
+title = "Зубчаста передача 14/26 з рівнозміщеним зачепленням і планетарний редуктор (gc62)"
+title_en = "A gear pair 14/26 with equal and opposite shifts and a planetary reducer (gc62)"
+designation = "ТММ.ЗП.62.200"
+
+[sheet]
+student = "Перевірка Н. Н."
+teacher = "Викладач В. В."
+group = "МБ-62"
+organisation = "НУБіП України"
+
+[gears]
+z = [14, 26]
+module = 0.006
+shifts = [0.3, -0.3]
+
+[planetary]
+type = "A"
+ratio = 8
+planets = 3
+module = 0.003
+rpm = 960
+"""

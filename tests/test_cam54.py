@@ -160,6 +160,41 @@ def test_the_given_table_takes_the_room_under_the_profile():
     assert with_given(low, cam, doc, "uk", None) is low
 
 
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_the_notes_legend_follows_the_table_of_the_divisions_renumbered(lang):
+    """Stop 62 (CAM62): the given data, read first, take Table 1 and the table of the divisions becomes
+    Table 2 — the notes' legend of «*» (an error δ past 5 %, starred in that table's δ columns) must point
+    at Table 2, not at the given data; the other notes' lettering untouched, and with no room for the
+    given data (the table stays 1) the legend stays «табл. 1»."""
+    from graphplan.drawing.layout import Placed
+    from graphplan.graphic.record import Record
+    from graphplan.sheets.camgiven import with_given
+    cam = build(tomllib.loads(CAM54), "<cam54>")
+    head = "Таблиця 1. Переміщення" if lang == "uk" else "Table 1. Displacement"
+    legend = ("* — похибка δ понад 5 % (табл. 1): коротка ордината" if lang == "uk"
+              else "* — an error δ past 5 % (Table 1): a short ordinate")
+    other = "R_0 = 48 мм (табл. 1 — ні)" if lang == "uk" else "R_0 = 48 mm (Table 1 - no)"
+    prof = Record("profile")
+    prof.segment((560.0, 300.0), (800.0, 560.0))
+    tab = Record("table", [], {})
+    tab.label((560.0, 200.0), head, size=3.5, layer="tables")
+    tab.segment((560.0, 60.0), (800.0, 196.0), layer="tables")
+    nts = Record("notes")
+    nts.label((300.0, 100.0), other, size=3.5)
+    nts.label((300.0, 90.0), legend, size=3.5)
+    page = [Placed("profile", prof, (555.0, 206.0, 836.0, 589.0)), Placed("table", tab, (560.0, 60.0, 800.0, 205.0)),
+            Placed("notes", nts, (295.0, 85.0, 540.0, 105.0))]
+    out = {p.name: p for p in with_given(page, cam, {"sense": "cw"}, lang, None)}
+    title = next(p.text for p in out["table"].record.items if p.kind == "text")
+    number = title.split(".")[0].split()[-1]
+    texts = [p.text for p in out["notes"].record.items if p.kind == "text"]
+    said = texts[1].split("(табл. " if lang == "uk" else "(Table ")[1][0]
+    assert number == said == "2"
+    assert texts[0] == other and out["notes"].box == page[2].box
+    low = [page[0], Placed("table", tab.moved(0.0, 90.0), (560.0, 150.0, 800.0, 295.0)), page[2]]
+    assert with_given(low, cam, {"sense": "cw"}, lang, None) is low
+
+
 # -- cam54's own: a rocking knife-edge follower turned by a clockwise cam -----------------------------
 
 def _rocking_theta(phi, R0, a=0.11, l=0.09, swing=math.radians(18.0), d=1e-3):

@@ -119,6 +119,28 @@ def test_a_given_base_radius_below_the_smallest_is_said_plainly(small):
     assert sum("менший за найменший" in x for x in lines) == 1
 
 
+@pytest.mark.parametrize("lang", ["uk", "en"])
+def test_a_taken_radius_under_the_graphical_smallest_says_why(small, lang):
+    """Stop 62 (CAM62: the exact smallest 47,889 mm rounded up to 48, read 48,12 mm off the phase diagram): a
+    base radius taken — the brute force's smallest rounded up to a whole mm — under the one read off the
+    diagram is said to be the exact one rounded up, the drawn one over it by the construction's error;
+    taken over the graphical one, the line says only what it takes. (CAM57_SMALL_R0's document with its R0
+    taken, not given.)"""
+    from graphplan.report.cam import cam_lines
+    cam, sol, g, doc = small
+    phi = np.linspace(0.0, 360.0, 72001)
+    s, v = _laws(phi, 0.03, 90.0, 60.0, 110.0, lambda u: np.where(u <= 0.5, 2 * u ** 2, 1 - 2 * (1 - u) ** 2),
+                 lambda u: u - np.sin(2 * np.pi * u) / (2 * np.pi))
+    r0 = _r0_min(s, v, 0.008, [phi <= 90.0, (phi >= 150.0) & (phi <= 260.0)], (25, 35))
+    take = math.ceil(r0 * 1000)
+    why = "округлений угору" if lang == "uk" else "rounded up"
+    taken = f"прийнято R_0 = {take} мм" if lang == "uk" else f"R_0 taken = {take} mm"
+    for drawn, said in ((take + 0.12, True), (take - 0.3, False), (float(take), False)):
+        d = dict(doc, base_radius_given=False, base_radius_m=take / 1000, base_radius_graphical_m=drawn / 1000)
+        line = next(x for x in cam_lines(d, lang) if taken in x)
+        assert (why in line) is said and "менший за" not in line and "below the" not in line
+
+
 def test_the_excess_is_marked_on_the_pressure_angle_diagram(small):
     """ϑ(φ) of CAM57_SMALL_R0: a point at the rise's largest ϑ (φ, ϑ as the solution's extreme) lettered
     with it and «*»; none on the return (within [ϑ])."""

@@ -143,7 +143,9 @@ def test_the_notes_say_the_corners_rho_over_the_smooth_parts_and_dpsi(lang):
     text = "\n".join(lines)
     assert "ds/dφ" not in text and "d^{2}s" not in text          # a rocking follower: ψ, never s
     assert "dψ/dφ" in text
-    smooth = "на гладких ділянках" if lang == "uk" else "over the smooth parts"
+    # «на гладких (опуклих) ділянках»: stop 62 — a profile with a concave stretch too says its ρ_min is the
+    # convex parts' (this one is concave at φ ≈ 0…25°)
+    smooth = "на гладких" if lang == "uk" else "over the smooth"
     rho = f"{doc['curvature_min_m'] * 1000:.2f}".replace(".", "," if lang == "uk" else ".")
     curv = next(x for x in lines if "ρ_{min}" in x and rho in x)      # 37,08 mm (the arm under O–O1, stop 60)
     assert smooth in curv

@@ -126,10 +126,12 @@ def test_the_train_chosen_the_nearest_named_and_why(lead):
     vel = construct_train(tr, 0.5, "uk")
     mesh = construct_mesh(sol.pair, 0.5, "uk", module_mm=24.0)
     doc = gears_json(sol, mesh, vel, "")
+    # stop 62: D named by what it measures — type A's ring, m·z3 (103 = z3 of the smallest set)
+    assert smallest[2] == 103
     for lang, words in (("uk", ("z = 20, 52, 124 дає u_{1H} = 7,2 (точно)", "D/m = 124 проти 103",
-                                "на 20 % більший", "−1,96 % у межах ±4 %", "D/m = 103")),
+                                "на 20 % більший", "−1,96 % у межах ±4 %", "діаметр D = m·z_3, D/m = 103")),
                         ("en", ("z = 20, 52, 124 gives u_{1H} = 7.2 (exactly)", "D/m = 124 against 103",
-                                "20 % larger", "−1.96 % being within ±4 %", "D/m = 103"))):
+                                "20 % larger", "−1.96 % being within ±4 %", "diameter D = m·z_3, D/m = 103"))):
         said = " ".join(note_parts(doc, lang, mesh, vel)[-1])
         assert all(x in said for x in words), (lang, said)
         assert " 271 наборів" not in said
@@ -149,6 +151,17 @@ def test_own_type_b_train_and_its_exact_rival():
     n = tr.nearest
     assert n["z"] == [18, 72, 24, 114] and n["ratio"] == 20.0 and n["diameter_modules"] == 162
     assert 72 * 114 == 19 * 18 * 24 and 18 + 72 == 114 - 24 and (18 * 24 + 72 * 114) % (3 * 24) == 0
+    # stop 62: the notes name D — the planets' envelope z1 + 2·z2 = 145 over the ring's 101 here
+    from graphplan.graphic.gears import construct_train
+    from graphplan.sheets.gears import note_parts
+    d = max(z1 + 2 * z2, z3)
+    assert d == 145
+    vel = construct_train(tr, 0.5, "uk")
+    from graphplan.report.gears import train_json
+    doc = {"planetary": train_json(tr, vel)}
+    for lang in ("uk", "en"):
+        said = " ".join(note_parts(doc, lang, None, vel)[-1])
+        assert f"D = m·max(z_1 + 2z_2, z_3), D/m = {d}" in said, said
     p = _pair(16, 44, 4.0, 0.25, 0.1)
     assert sol.pair.eps == pytest.approx(p["eps"], rel=1e-12)
     assert sol.pair.aw * 1000 == pytest.approx(p["aw"], rel=1e-12)

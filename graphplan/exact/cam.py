@@ -488,6 +488,34 @@ class Solution:
             self.cache["rho"] = self._curvature_min()
         return self.cache["rho"]
 
+    def concave(self) -> list[tuple[float, float, float]]:
+        """The centre profile's concave stretches, each (from φ°, to φ°, the least |ρ| there, m): the runs
+        of ρ < 0 on the 0.025° grid of ``curvature_min``, a run up to 360° joined to the one from 0° (then
+        from > to: «350…25°» crosses φ = 0); a run
+        whose least |ρ| is over a thousand base radii is a straight stretch's rounding noise and left out.
+        (Stop 62: CAM61's profile is faintly concave over φ = 272,5…281,3°, |ρ| ≥ 601,6 mm, which the
+        notes' «ρ_min = 26 мм» left a teacher to find on the drawing.)"""
+        if "concave" not in self.cache:
+            phi = np.linspace(0.0, 360.0, 14401)[:-1]          # (360° is 0° again)
+            rho = self.at(phi)["rho"]
+            neg = np.isfinite(rho) & (rho < 0)
+            runs, j = [], 0
+            while j < len(phi):
+                if not neg[j]:
+                    j += 1
+                    continue
+                k = j
+                while k + 1 < len(phi) and neg[k + 1]:
+                    k += 1
+                runs.append([float(phi[j]), float(phi[k]), float(np.min(-rho[j:k + 1]))])
+                j = k + 1
+            if len(runs) > 1 and runs[0][0] == 0.0 and runs[-1][1] == float(phi[-1]):   # one run across φ = 0,
+                last = runs.pop()                                  # from its start before 360° to its end after 0°
+                runs[0] = [last[0], runs[0][1], min(last[2], runs[0][2])]
+            big = 1000.0 * self.geometry.R0
+            self.cache["concave"] = [tuple(r) for r in runs if r[2] <= big]
+        return self.cache["concave"]
+
     def _curvature_min(self) -> float:
         from scipy.optimize import minimize_scalar
         phi = np.linspace(0.0, 360.0, 14401)

@@ -73,6 +73,8 @@ def cam_json(sol: Solution, g: CamConstruction, scene: str) -> dict[str, Any]:
         # where each phase's largest |ϑ| falls (stop 56: a rocking arm's rise has it at φ = 0°, where it rests)
         "pressure_angle_extreme_phi_deg": dict(zip(("rise", "return"), (p for p, _ in sol.pressure_extreme_points()))),
         "curvature_min_m": _f(sol.curvature_min()),
+        # the centre profile's concave stretches (stop 62): ρ_min is over the convex parts
+        "profile_concave": [{"from_deg": a, "to_deg": b, "rho_min_m": r} for a, b, r in sol.concave()],
         "profile_corners": [{"phi_deg": c.phi_deg, "ds_dphi_before" + ("_deg" if cam.rocking else "_m"): c.v_before * unit,
                              "ds_dphi_after" + ("_deg" if cam.rocking else "_m"): c.v_after * unit,
                              "convex": c.convex, **_sides_theta(sol, c.phi_deg)} for c in sol.corners()],
@@ -101,6 +103,8 @@ WORDS = {
                     "linear": "лінійний", "trapezoidal": "трапецеїдальний"},
            "phases": "фази: φ_п = {a}°, φ_вв = {b}°, φ_с = {c}°, φ_бв = {d}°",
            "radius": "R_0 найменший = {m} мм (графічно {g} мм, похибка {e} %); прийнято R_0 = {r} мм",
+           "radius_under": "R_0 найменший = {m} мм (графічно {g} мм, похибка {e} %); прийнято R_0 = {r} мм — "
+                           "точний найменший, округлений угору (графічний більший на похибку побудови)",
            "radius_given": "R_0 найменший = {m} мм (графічно {g} мм, похибка {e} %); задано R_0 = {r} мм",
            "radius_small": "R_0 найменший = {m} мм (графічно {g} мм, похибка {e} %); задано R_0 = {r} мм — менший "
                            "за найменший: кут тиску перевищує допустимий (*), слід прийняти R_0 ≥ {k} мм",
@@ -125,6 +129,8 @@ WORDS = {
            "curv": "найменший радіус кривини центрового профілю ρ_{{min}} = {c} мм, ролик r = {r} мм",
            "knife": "найменший радіус кривини профілю ρ_{{min}} = {c} мм (штовхач із вістрям, без ролика)",
            "smooth": "на гладких ділянках",
+           "convex_parts": "на опуклих ділянках", "smooth_convex": "на гладких опуклих ділянках",
+           "concave_at": "угнутий при φ = {l}", "concave_one": "{a}…{b}° (|ρ| ≥ {r} мм)",
            "corners": "центровий профіль має злами (ρ = 0, ρ_{{min}} там не визначений), де {v} стрибає: {c}",
            "corner": "{n} при φ = {p}° ({a} → {b} {u}; {k})",
            "shocks": "удари: {l}", "no_shocks": "ударів немає ({v}, {a} неперервні)",
@@ -156,6 +162,8 @@ WORDS = {
                     "linear": "linear", "trapezoidal": "trapezoidal"},
            "phases": "phases: φ_{{rise}} = {a}°, φ_{{far}} = {b}°, φ_{{return}} = {c}°, φ_{{near}} = {d}°",
            "radius": "smallest R_0 = {m} mm (graphically {g} mm, error {e} %); R_0 taken = {r} mm",
+           "radius_under": "smallest R_0 = {m} mm (graphically {g} mm, error {e} %); R_0 taken = {r} mm — the exact "
+                           "smallest rounded up (the graphical one is over it by the construction's error)",
            "radius_given": "smallest R_0 = {m} mm (graphically {g} mm, error {e} %); R_0 given = {r} mm",
            "radius_small": "smallest R_0 = {m} mm (graphically {g} mm, error {e} %); R_0 given = {r} mm — below the "
                            "smallest: the pressure angle exceeds the allowed one (*); take R_0 ≥ {k} mm",
@@ -179,6 +187,8 @@ WORDS = {
            "curv": "smallest radius of curvature of the centre profile ρ_{{min}} = {c} mm, roller r = {r} mm",
            "knife": "smallest radius of curvature of the profile ρ_{{min}} = {c} mm (a knife-edge follower, no roller)",
            "smooth": "over the smooth parts",
+           "convex_parts": "over the convex parts", "smooth_convex": "over the smooth convex parts",
+           "concave_at": "concave at φ = {l}", "concave_one": "{a}…{b}° (|ρ| ≥ {r} mm)",
            "corners": "corners of the centre profile (ρ = 0 there, ρ_{{min}} undefined) where {v} jumps: {c}",
            "corner": "{n} at φ = {p}° ({a} → {b} {u}; {k})",
            "shocks": "shocks: {l}", "no_shocks": "no shocks ({v}, {a} continuous)",
@@ -395,6 +405,11 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
     # a given R0 below the smallest said plainly, with the radius to take (review 57: a warning alone)
     small = doc.get("base_radius_given") and doc["base_radius_m"] < doc["base_radius_min_m"] * (1 - 1e-9)
     key = "radius_small" if small else "radius_given" if doc.get("base_radius_given") else "radius"
+    # the radius taken under the one read off the phase diagram (stop 62: CAM62 took 48 mm, the exact 47,889
+    # rounded up, under the graphical 48,12 — a teacher asks why the taken R0 is under the student's own
+    # smallest): the line says what it is rounded up from and why the drawn one is over it
+    if key == "radius" and g is not None and doc["base_radius_m"] < g * (1 - 1e-9):
+        key = "radius_under"
     lines.append(w[key].format(m=n(doc["base_radius_min_m"] * 1000, 5), g=n(None if g is None else g * 1000),
                                     k=math.ceil(doc["base_radius_min_m"] * 1000 - 1e-9),
                                     # to 0.01 %, as Table 1's δ (a teacher reads "−0,00805 %" as false precision)
@@ -442,8 +457,14 @@ def cam_lines(doc: dict[str, Any], lang: str) -> list[str]:
     roller = doc["roller_radius_m"] > 0
     curv = w["curv" if roller else "knife"].format(c=n(None if c is None else c * 1000), r=n(doc["roller_radius_m"] * 1000))
     corners = doc.get("profile_corners") or []
-    if corners:         # ρ_min holds over the smooth parts only: at a corner ρ = 0
-        curv = curv.replace("ρ_{min}", "ρ_{min} " + w["smooth"], 1)
+    hollow = doc.get("profile_concave") or []
+    if corners or hollow:   # ρ_min holds over the smooth parts only (at a corner ρ = 0), the convex ones only
+        curv = curv.replace("ρ_{min}", "ρ_{min} " + w["smooth_convex" if corners and hollow else
+                                                     "smooth" if corners else "convex_parts"], 1)
+    if hollow:              # where the profile is concave, and how gently (stop 62: CAM61's |ρ| ≥ 601,6 mm unsaid)
+        curv += "; " + w["concave_at"].format(l=", ".join(
+            w["concave_one"].format(a=_tenth(x["from_deg"], lang), b=_tenth(x["to_deg"], lang),
+                                    r=fixed(x["rho_min_m"] * 1000, lang, 1)) for x in hollow))
     lines.append(curv)
     q = symbols(rocking)
     key = "_deg" if rocking else "_m"

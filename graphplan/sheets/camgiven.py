@@ -90,6 +90,23 @@ def renumbered(rec: Record, lang: str, old: int, new: int) -> Record:
     return Record(rec.title, items, dict(rec.scales))
 
 
+def references_renumbered(rec: Record, lang: str, old: int, new: int) -> Record:
+    """``rec`` (the placed notes) with its references to the table numbered ``old`` — «(табл. 1)»,
+    «(Table 1)», the legend of «*» — written ``new``: the given data, read first, take Table 1 and the
+    table of the divisions its δ and ϑ cells are starred in becomes Table 2 (stop 62: CAM62's legend
+    «* — похибка δ понад 5 % (табл. 1)» pointed at the given data, its starred −7,37* in Table 2)."""
+    from dataclasses import replace
+    pairs = [(f"табл. {old})", f"табл. {new})"), (f"Table {old})", f"Table {new})")]
+    a, b = pairs[0] if lang == "uk" else pairs[1]
+    items = [replace(p, text=p.text.replace(a, b)) if p.kind == "text" and a in (p.text or "") else p
+             for p in rec.items]
+    out = Record(rec.title, items, dict(rec.scales))
+    for key, value in vars(rec).items():       # what a notes record carries besides (parts, theta_at)
+        if key not in ("title", "items", "scales"):
+            setattr(out, key, value)
+    return out
+
+
 def tab_size(rec: Record) -> float:
     """The letter height of a placed table's cells (its body's lettering, under its 3.5-mm title)."""
     sizes = [p.size for p in rec.items if p.kind == "text" and p.layer == "tables"]
@@ -148,6 +165,8 @@ def with_given(page: list[Placed], cam: Cam, doc: dict, lang: str, rebuild=None)
             elif p is tab:
                 out.append(Placed(p.name, renumbered(table2, lang, 1, 2),
                                   (p.box[0], p.box[1], p.box[2], min(p.box[3], t2[3] + GAP / 2))))
+            elif p.name == "notes":
+                out.append(Placed(p.name, references_renumbered(p.record, lang, 1, 2), p.box))
             else:
                 out.append(p)
         return out + [Placed("given", rec, box)]

@@ -70,7 +70,7 @@ WORDS = {
                     "звідси межа похибки u_{{1H}}",
            "synth": "Числа зубців вибрано з наборів, що задовольняють умови співвісності, складання, "
                     "сусідства й непідрізання при u_{{1H}} у межах ±4 % від потрібного (їх {n}): найменший зовнішній "
-                    "діаметр, D/m = {D0}",
+                    "діаметр D = {Dd}, D/m = {D0}",
            "nearer": "Набір z = {z} дає u_{{1H}} = {u} ({d}), але D/m = {D} проти {D0} (редуктор на {g} % більший); "
                      "за правилом узято менший: його відхилення {d0} % у межах ±4 %",
            "exactly": "точно",
@@ -124,7 +124,7 @@ WORDS = {
            "short": "The segment of ω_H on the plan is only {s} mm (ω_H = ω_1/{u}): the ruler's half division is {e} % "
                     "of it; hence the bound of u_{{1H}}",
            "synth": "The teeth chosen from the sets meeting coaxiality, assembly, neighbourhood and no undercut "
-                    "with u_{{1H}} within ±4 % of the wanted ({n} sets): the smallest outer diameter, D/m = {D0}",
+                    "with u_{{1H}} within ±4 % of the wanted ({n} sets): the smallest outer diameter D = {Dd}, D/m = {D0}",
            "nearer": "The set z = {z} gives u_{{1H}} = {u} ({d}) but D/m = {D} against {D0} (a train {g} % larger); "
                      "the rule takes the smaller, its error {d0} % being within ±4 %",
            "exactly": "exactly",
@@ -433,7 +433,10 @@ def note_parts(doc: dict, lang: str, mesh, vel) -> list[list[str]]:
                                          e=_n(100 * vel.precision / 2 / sH, lang, 2)))
         if t["candidates"]:
             chosen = next((c for c in t["candidates"] if list(c["z"]) == list(t["z"])), t["candidates"][0])
-            out.append(w["synth"].format(n=t["candidates_passing"], D0=chosen["diameter_modules"]))
+            # D named by what it measures (stop 62: «найменший зовнішній діаметр, D/m = 121» left a teacher
+            # asking which diameter — the planets' 17 + 2·52 over the ring's 89; exact.gears.overall)
+            out.append(w["synth"].format(n=t["candidates_passing"], D0=chosen["diameter_modules"],
+                                         Dd="m·z_3" if t["type"] == "A" else "m·max(z_1 + 2z_2, z_3)"))
             pair = nearer_candidate(t)
             if pair:
                 near, chosen = pair
