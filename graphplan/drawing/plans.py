@@ -1091,8 +1091,9 @@ SWING_STEP = "dimensions: swing"    # the swing's lettering asked at several spo
 
 def place_swing(rec: Record, alternatives: list[LabelRequest], frame: tuple[float, float, float, float]) -> Record:
     """The swing's «ψ_max = …» at the first of its ``alternatives`` (``swing_dimension``) with a free
-    spot beside it within ``frame`` (the plan's lines' box): else at the first on a leader within
-    it; else as any label (the first, farther out, on a leader). Stop 62: at 1:2,5 the crusher's
+    spot beside it within ``frame`` (the plan's lines' box) grown by ``SWING_OUT`` (a line of
+    lettering over the arc, where it is the plan's edge, as the four-bar's stands): else at the
+    first on a leader within it; else as any label (the first, farther out, on a leader). Stop 62: at 1:2,5 the crusher's
     «ψ_max = 23,63°» found no spot by its arc among the rocker's twelve numbered positions and
     stood on a 40-mm leader below B″, 20 mm past the plan's lines — the A3 plan measured too tall
     for its sheet fell to 1:4. Beside the arc's end, under the rocker's lowest line, it does not
@@ -1101,7 +1102,7 @@ def place_swing(rec: Record, alternatives: list[LabelRequest], frame: tuple[floa
     from graphplan.graphic.record import Primitive
     if not alternatives:
         return rec
-    x0, y0, x1, y1 = frame
+    x0, y0, x1, y1 = frame[0] - SWING_OUT, frame[1] - SWING_OUT, frame[2] + SWING_OUT, frame[3] + SWING_OUT
 
     def inside(box) -> bool:
         return box[0] >= x0 and box[1] >= y0 and box[2] <= x1 and box[3] <= y1
@@ -1127,6 +1128,7 @@ def place_swing(rec: Record, alternatives: list[LabelRequest], frame: tuple[floa
     return place_labels(rec, alternatives[:1])
 
 
+SWING_OUT = 6.0       # mm: the swing's lettering may stand this far out of the plan's lines (``place_swing``)
 SWING_LEADER = 12.0   # mm: the swing's lettering on a leader at most about this long (``place_swing``)
 
 
