@@ -10061,3 +10061,84 @@ planets = 3
 module = 0.003
 rpm = 960
 """
+
+
+
+# kin62 (stop 62): my own — a shaper's rocking coulisse driving the ram through a block pinned to it
+# (I(0-1) -> II(2-3) RPR -> II(4-5) RPP): the ram 5 on its guide carries the block 4 of the coulisse's slot
+KIN62_SHAPER_BLOCK = '''
+# kin62 (stop 62): a shaper's rocking coulisse driving the ram through a block — the crank O1A turns
+# clockwise at 60 rpm; the block 2 at A slides in the coulisse 3 (O3B) rocking about O3; the ram 5 on a
+# horizontal guide carries on its pin C the block 4, which slides in the same coulisse
+# (I(0-1) -> II(2-3) RPR -> II(4-5) RPP); a 1500 N cutting force on the ram over its working stroke.
+title = "Кулісний механізм поперечно-стругального верстата з каменем на повзуні"
+title_en = "Shaper's rocking-coulisse mechanism with a block on the ram"
+designation = "ТММ.КП.62.100"
+
+[sheet]
+student = "Студент С. С."
+teacher = "Викладач В. В."
+group = "МБ-62"
+organisation = "НУБіП України"
+
+[frame.points]
+O1 = [0, 0]
+O3 = [0, -0.35]
+
+[frame.guides]
+x = { through = [0, 0.15], angle_deg = 0, title_uk = "повзуна", title_en = "of the ram" }
+
+[crank]
+name = "O1A"
+pivot = "O1"
+pin = "A"
+length = 0.10
+rpm = 60
+direction = "cw"
+points = { S1 = 0.0 }
+
+[[link]]
+name = "A2"
+number = 2
+joints = ["A"]
+slides_on = "O3B"
+mass = 2
+
+[[link]]
+name = "O3B"
+number = 3
+joints = ["O3"]
+length = 0.56
+points = { B = 1.0, S3 = 0.5 }
+
+[[link]]
+name = "C"
+number = 5
+joints = ["C"]
+slides_on = "x"
+mass = 30
+
+[[link]]
+name = "C4"
+number = 4
+joints = ["C"]
+slides_on = "O3B"
+mass = 2
+
+[positions]
+count = 12
+start = "working"
+accel = [2]
+force_phi_deg = 60
+
+[loads]
+g = 9.81
+mass_per_length = 20
+inertia_factor = 0.1
+
+[[force]]
+point = "C"
+magnitude = 1500
+stroke = "working"
+direction = "oppose"
+'''

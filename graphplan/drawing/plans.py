@@ -69,12 +69,12 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
                 rec.segment(_pt(complex(a)), _pt(complex(b)), role=role, width=width, layer="mechanism", step=step)
         if link.slides_on is not None and len(joints) <= 1:
             if thick:
-                centre = pts[next(iter(link.local))]     # the slider's own point (its first joint)
-                u = lay.poses[name].direction(0.0)
-                w, h = BLOCK
-                corners = [centre + u * complex(sx * w / 2, sy * h / 2) for sx, sy in
-                           ((-1, -1), (1, -1), (1, 1), (-1, 1))]
-                rec.add("polygon", [_pt(c) for c in corners], role=role, layer="mechanism", step=step)
+                corners = block_corners(sc, lay, name)
+                front = [block_corners(sc, lay, o) for o in pinned_blocks(sc, name)]
+                if not front:
+                    rec.add("polygon", [_pt(c) for c in corners], role=role, layer="mechanism", step=step)
+                for a, b in _behind(corners + corners[:1], front):
+                    rec.segment(_pt(a), _pt(b), role=role, layer="mechanism", step=step)
             continue
         # one rigid link through all its points: the rocker O2–B–D to D, a plate round E off its line
         shape = [pts[p] for p in outline_names(link, pts)]
@@ -88,6 +88,65 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
                 if p not in link.joints and p in pts and not sc.fixed(p) and (
                         p != next(iter(link.local)) or yoke_guide(mech, name) is not None):
                     rec.point(_pt(pts[p]), role="dot", layer="mechanism")
+
+
+CARRIAGE = (12.0, 6.0)   # a slider on a frame guide that carries another's block on its pin, mm …
+STONE = (8.0, 4.0)       # … and that block (the stone in a moving link's slot), drawn in front of it
+
+
+def pinned_blocks(sc: Scheme, name: str) -> list[str]:
+    """The blocks drawn in front of the block ``name``: where a slider on a frame guide carries on its
+    pin the block of a moving link's slot (LINK62: the slider 3 on its inclined guide, the block 4
+    in the lever's slot, both at B), the block in the slot — the lever's plane — is in front and
+    the slider's edges under it are hidden, as a drawing hides them (the two 9 × 5 blocks drawn
+    over each other read as one eight-pointed knot). Empty for any other block."""
+    mech = sc.mech
+    link = mech.links[name]
+    if link.slides_on is None or len(link.joints) > 1 or mech.guides[link.slides_on].body != FRAME:
+        return []
+    pin = next(iter(link.local))
+    return [o for o, l in mech.links.items() if o != name and l.slides_on is not None and len(l.joints) <= 1
+            and next(iter(l.local)) == pin and mech.guides[l.slides_on].body != FRAME]
+
+
+def block_size(sc: Scheme, name: str) -> tuple[float, float]:
+    """A slider's block, mm (length along its guide, height): ``BLOCK``; where two blocks share one
+    pin (``pinned_blocks``) the carriage on the frame guide longer and taller (``CARRIAGE``), the
+    stone in front of it smaller (``STONE``) — which is which reads at a glance."""
+    mech = sc.mech
+    if pinned_blocks(sc, name):
+        return CARRIAGE
+    link = mech.links[name]
+    if link.slides_on is not None and len(link.joints) <= 1 and any(
+            name in pinned_blocks(sc, o) for o in mech.links if o != name):
+        return STONE
+    return BLOCK
+
+
+def block_corners(sc: Scheme, lay: Layout, name: str) -> list[complex]:
+    """The four corners of a slider's block at a position: centred on its own point (its first
+    joint), along its guide, ``block_size``."""
+    pin = next(iter(sc.mech.links[name].local))
+    centre = where(sc, lay, sc.body_of(pin), pin)
+    u = lay.poses[name].direction(0.0)
+    w, h = block_size(sc, name)
+    return [centre + u * complex(sx * w / 2, sy * h / 2) for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))]
+
+
+def _behind(outline: list[complex], fronts: list[list[complex]]) -> list[tuple[complex, complex]]:
+    """The pieces of a closed ``outline`` (its points, the first repeated) outside every polygon of
+    ``fronts`` — the edges a block drawn in front leaves in sight (all of it where none)."""
+    if not fronts:
+        return []
+    from shapely.geometry import LineString, Polygon
+    from shapely.ops import unary_union
+    seen = LineString([_pt(z) for z in outline]).difference(unary_union([Polygon([_pt(z) for z in f]) for f in fronts]))
+    parts = getattr(seen, "geoms", [seen])
+    out = []
+    for part in parts:
+        xy = list(part.coords) if not part.is_empty else []
+        out += [(complex(*a), complex(*b)) for a, b in zip(xy, xy[1:]) if abs(complex(*a) - complex(*b)) > 1e-6]
+    return out
 
 
 WEDGE_OFF_MM = 1.0   # a sliding carrier's joint this far off its slot's line is joined to the slot
@@ -349,15 +408,15 @@ def draw_frame(rec: Record, sc: Scheme, layouts: list[Layout], thick: list[Layou
         normal = -1j * u
         # the hatching stops at a block drawn on the guide (a thick position's, BLOCK wide): the
         # block sits on the guide's hatched side, and strokes through it read as drawn over it
-        blocks = [((lay.poses[s].at(mech.links[s].local[next(iter(mech.links[s].local))]) - base)
-                   * u.conjugate()).real for lay in (thick or []) for s in sliders]
+        blocks = [(((lay.poses[s].at(mech.links[s].local[next(iter(mech.links[s].local))]) - base)
+                    * u.conjugate()).real, block_size(sc, s)[0] / 2) for lay in (thick or []) for s in sliders]
         # … and at a wedge's triangle drawn over it (review 62: the ram's guide run down into the wedge,
         # its strokes across the wedge's side): the guide's line goes on, its hatching stops
         wedges = [w for lay in (thick or []) for w in wedge_bodies(sc, lay)]
         t = lo
         while t <= hi:
             s = base + t * u + normal * 2.5
-            if not any(t - 2.0 < c + BLOCK[0] / 2 + BLOCK_CLEAR and t > c - BLOCK[0] / 2 - BLOCK_CLEAR for c in blocks) \
+            if not any(t - 2.0 < c + half + BLOCK_CLEAR and t > c - half - BLOCK_CLEAR for c, half in blocks) \
                     and not any(_inside(z, w) for w in wedges for z in (base + t * u + normal * 0.35, s - u * 2.0)):
                 rec.segment(_pt(base + t * u + normal * 0.35), _pt(s - u * 2.0), role="hatch", layer="frame")
             t += 4.0
@@ -607,6 +666,7 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk", joine
     labels = omega_arrow(rec, O, r, mech.omega1, 245.0 if middle is None else middle) + labels   # by its arc, first
     if not lettered:
         return rec
+    lines = rec.bounds()          # every line drawn: the swing's lettering stays within them
     place_labels(rec, labels)
     owners = number_owner(sc, thick_lays, rec)
     for alternatives in link_numbers(sc, lay, pts, along=True):     # each beside its own bar
@@ -616,7 +676,8 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk", joine
                    for name in joints_at(sc, other) if name not in mech.frame
                    and name not in paired}          # B₈ says 8 there (a coulisse's A: its number beside it)
     numbers = position_numbers(plans, O, dots, skip=lettered_at, joined=joined)
-    placed = place_labels(rec, numbers + late)
+    placed = place_labels(rec, numbers + [q for q in late if q.step != SWING_STEP])
+    placed = place_swing(placed, [q for q in late if q.step == SWING_STEP], lines)
     more = () if joined else far_numbers(plans, placed, numbers)
     return position_record(plans, lettered, lang, joined=more) if more else placed
 
@@ -876,6 +937,7 @@ def same_spots(path: list[complex], keys: list[int], joined: list[tuple[int, int
 
 DIM_OFF = 12.0    # mm from the slider's path to the stroke's dimension line (clear of the block)
 DIM_PAST = 7.0    # … and at least this far past the drawing's last line on that side, over the stroke
+DIM_SIDE = 10.0   # mm: the side toward the crank is taken where it is clear this much nearer the path
 
 
 def _strokes(rec: Record) -> list[tuple[complex, complex]]:
@@ -899,8 +961,10 @@ def dimension_place(rec: Record, X1: complex, u: complex, away: complex, span: f
     """Where the stroke's dimension line goes: the side of the slider's path (``away`` from the
     crank first) and the offset (from ``DIM_OFF`` out, 1 mm steps, to ``DIM_PAST`` past the
     drawing's last line on that side over the stroke) at which it crosses the fewest lines — the
-    nearest such, the side away from the crank on a tie. The slotter's H = 350 ran 12 mm above
-    its guide through its rods; it now runs above them, clear."""
+    nearest such, the side toward the crank counted ``DIM_SIDE`` mm farther (away from the crank on
+    a tie). The slotter's H = 350 ran 12 mm above its guide through its rods; it now runs above
+    them, clear. Stop 62: LINK62's slider B under a slotted lever's fan, its H clear 111 mm below
+    the guide past the lever's end C″ (read as C′C″'s stroke), is clear 48 mm above it."""
     import numpy as np
     pieces = _strokes(rec)
     if not pieces:
@@ -920,7 +984,7 @@ def dimension_place(rec: Record, X1: complex, u: complex, away: complex, span: f
                 t = (off - y0) / dy
                 x = x0 + t * (x1 - x0)
             hits = int(np.sum((np.abs(dy) > 1e-12) & (t >= 0) & (t <= 1) & (x >= 0) & (x <= span)))
-            key = (hits, sign < 0, float(off))
+            key = (hits, float(off) + (DIM_SIDE if sign < 0 else 0.0), sign < 0)
             if best is None or key < best[0]:
                 best = (key, side, float(off))
             if hits == 0:
@@ -1041,9 +1105,75 @@ def swing_dimension(rec: Record, plans: Plans, lang: str = "uk") -> list[LabelRe
     others = [where(sc, ends[0], FRAME, j) for j in st.mech.frame if j != pivot]
     text = f"ψ_max = {fixed(psi, lang, 2)}°"
     # the lettering may stand its whole width either way of its anchor: clear by that and SWING_CLEAR
-    t = swing_label_at(P, R, a1, a2, others, text_width(text, 3.5) + SWING_CLEAR)
+    need = text_width(text, 3.5) + SWING_CLEAR
+    t = swing_label_at(P, R, a1, a2, others, need)
     mid = P + R * cmath.exp(1j * math.radians(a1 + t * (a2 - a1)))
-    return [LabelRequest(mid, text, toward=mid - P, size=3.5, step=step)]
+    # where no spot beside the arc's middle is free (the swing's arc among the rocker's numbered
+    # positions), the other shares that clear the pivots, either side of the arc, then beyond its
+    # ends: ``place_swing`` takes the first within the plan's lines
+    def at(u: float) -> complex:
+        return P + R * cmath.exp(1j * math.radians(a1 + u * (a2 - a1)))
+
+    def clear(z: complex) -> bool:
+        return all(abs(z - o) >= need for o in others)
+    shares = [t] + [u for u in sorted(SWING_TRIES, key=lambda u: abs(u - t)) if u != t and clear(at(u))]
+    first = [LabelRequest(mid, text, toward=mid - P, size=3.5, step=SWING_STEP)]
+    more = [LabelRequest(at(u), text, toward=side * (at(u) - P), size=3.5, step=SWING_STEP)
+            for u in shares for side in (1, -1)][1:]
+    # … else beside the outer side's extension line, inside the arc, the side away from the sweep
+    # (under the rocker's lowest line, beside B″), a share ``k`` of the radius from the pivot
+    ends_ = [LabelRequest(P + k * (at(u) - P), text, toward=(at(u) - P) * (1j if u > 0.5 else -1j),
+                          size=3.5, step=SWING_STEP) for u in (1.0, 0.0) for k in SWING_ALONG if clear(at(u))]
+    return first + more + ends_
+
+
+SWING_ALONG = (0.85, 0.7, 0.55)   # shares of the arc's radius along an extension line, tried for the lettering
+
+
+SWING_STEP = "dimensions: swing"    # the swing's lettering asked at several spots (``place_swing``)
+
+
+def place_swing(rec: Record, alternatives: list[LabelRequest], frame: tuple[float, float, float, float]) -> Record:
+    """The swing's «ψ_max = …» at the first of its ``alternatives`` (``swing_dimension``) with a free
+    spot beside it within ``frame`` (the plan's lines' box) grown by ``SWING_OUT`` (a line of
+    lettering over the arc, where it is the plan's edge, as the four-bar's stands): else at the
+    first on a leader within it; else as any label (the first, farther out, on a leader). Stop 62: at 1:2,5 the crusher's
+    «ψ_max = 23,63°» found no spot by its arc among the rocker's twelve numbered positions and
+    stood on a 40-mm leader below B″, 20 mm past the plan's lines — the A3 plan measured too tall
+    for its sheet fell to 1:4. Beside the arc's end, under the rocker's lowest line, it does not
+    grow the plan."""
+    from graphplan.drawing.labels import CLEAR as _CLEAR, FAR, NEAR, _far, _near, obstacles
+    from graphplan.graphic.record import Primitive
+    if not alternatives:
+        return rec
+    x0, y0, x1, y1 = frame[0] - SWING_OUT, frame[1] - SWING_OUT, frame[2] + SWING_OUT, frame[3] + SWING_OUT
+
+    def inside(box) -> bool:
+        return box[0] >= x0 and box[1] >= y0 and box[2] <= x1 and box[3] <= y1
+    ob = obstacles(rec.items)
+    for req in alternatives:
+        ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
+        size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + _CLEAR + 2.0
+        spot = _near(ob.near(req.at, NEAR[-1] + size), req, ink, inside)
+        if spot is not None:
+            rec.label((spot[1].real, spot[1].imag), req.text, size=req.size, anchor="start", step=req.step,
+                      layer="labels")
+            return rec
+    for req in alternatives:
+        ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
+        size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + _CLEAR + 2.0
+        spot = _far(ob.near(req.at, FAR[-1] + size), req, ink, inside)
+        if spot is not None and abs(spot[2][1] - spot[2][0]) <= SWING_LEADER:
+            (a, b) = spot[2]
+            rec.segment((a.real, a.imag), (b.real, b.imag), role="label", layer="labels", step=req.step)
+            rec.label((spot[1].real, spot[1].imag), req.text, size=req.size, anchor="start", step=req.step,
+                      layer="labels")
+            return rec
+    return place_labels(rec, alternatives[:1])
+
+
+SWING_OUT = 6.0       # mm: the swing's lettering may stand this far out of the plan's lines (``place_swing``)
+SWING_LEADER = 12.0   # mm: the swing's lettering on a leader at most about this long (``place_swing``)
 
 
 SWING_CLEAR = 10.0   # mm: the swing's lettering (its anchor: this and the text's width) this far from any other pivot
@@ -1121,6 +1251,19 @@ def link_numbers(sc: Scheme, lay: Layout, pts: dict[str, complex], along: bool =
             d = joints[1] - joints[0]
             normal = 1j * d / abs(d) if abs(d) > 1e-9 else 1j
             spots = [joints[0] + t * d for t in (ALONG if along else ALONG[:1])]
+        elif block_size(sc, name) != BLOCK:
+            # a carriage and the stone on its pin (``pinned_blocks``): each numbered beyond its own
+            # block's ends or sides, where it stands out of the other — not both at the shared pin
+            corners = block_corners(sc, lay, name)
+            u = (corners[1] - corners[0]) / abs(corners[1] - corners[0])
+            n = 1j * u
+            c = pts[next(iter(link.local))]
+            w, h = block_size(sc, name)
+            ends = [(c + u * w / 2, u), (c - u * w / 2, -u), (c + n * h / 2, n), (c - n * h / 2, -n)]
+            asked = [LabelRequest(z, str(link.number), toward=d, size=5.0, optional=True, step=f"number of {name}")
+                     for z, d in (ends if along else ends[:1])]
+            out.append(asked if along else asked[0])
+            continue
         else:
             spots = [pts[next(iter(link.local))]]
             normal = 1j
@@ -1143,11 +1286,8 @@ def link_shapes(sc: Scheme, lay: Layout) -> dict[str, list[complex]]:
             x = rod_crossing(p, _yoke_frame(sc, lay, name)[1], a, (b - a) / abs(b - a))
             out[name] = [a, b, x, q if abs(q - x) >= abs(p - x) else p]
         elif link.slides_on is not None and len(link.joints) <= 1:
-            centre = pts[next(iter(link.local))]
-            u = lay.poses[name].direction(0.0)
-            w, h = BLOCK
-            out[name] = [centre + u * complex(sx * w / 2, sy * h / 2)
-                         for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1), (-1, -1))]
+            corners = block_corners(sc, lay, name)
+            out[name] = corners + corners[:1]
         else:
             out[name] = [pts[p] for p in outline_names(link, pts)]
     return out
