@@ -876,8 +876,9 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
 
 
 COINCIDE = 2.0 * POINT_INK["dot"]    # mm: two points' dots nearer than this overlap
-NUMBER_FARTHEST = FAR[-1]            # mm of paper at most between a point and its number (on the placer's
-#                                      farthest leader ring); a number that finds no place so near is left off
+NUMBER_FARTHEST = FAR[-1] * math.sqrt(2.0)   # mm of paper at most between a point and its number: the placer's
+#                                      farthest leader ring (32 mm, √2 times that along a diagonal); a number that
+#                                      finds no place so near is left off, not set past the drawing's edge
 
 
 def coinciding(at: list[complex]) -> list[list[int]]:
