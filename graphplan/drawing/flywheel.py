@@ -10,8 +10,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from graphplan.drawing.diagrams import fmt
-from graphplan.drawing.labels import place_beside, place_labels, row_clear
-from graphplan.graphic.record import LabelRequest, Primitive, Record, line_pitch
+from graphplan.drawing.labels import FAR, place_beside, place_labels, row_clear
+from graphplan.graphic.record import POINT_INK, LabelRequest, Primitive, Record, line_pitch
 from graphplan.model.motors import latin
 from graphplan.util.words import column_decimals, fixed, num
 
@@ -780,16 +780,27 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
         rec.point((float(f.I_all[j]), float(f.dT_all[j])), role="construction", layer=LAYER, step="added point")
     for j in range(n):
         rec.point((f.I[j], f.dT[j]), role="construction", layer=LAYER, step=f"point {j}")
-        if j % every == 0:
-            at = dots[j]
-            # every other division's point a rival (drawing.plans position_numbers): the number nearer
-            # its own point than any other, else on a leader to it that passes none; outside the curve first
-            rivals = tuple(z for z in (*dots, *added) if abs(z - at) > 1e-6)   # the added points' dots too
-            toward = at - middle if abs(at - middle) > 1e-6 else 1 + 1j
-            asked = [LabelRequest(at, str(j), toward, NUM, step=f"point {j}", sight=True, across=False, rivals=rivals)]
-            if j:                # point 0 lies on the I* axis, its own projection: its number never across it
-                asked.append(LabelRequest(at, str(j), toward, NUM, step=f"point {j}", across=False, rivals=rivals))
-            numbers.append(asked)
+    # the lettered points whose dots overlap (``coinciding``) take one number between them, as a student
+    # letters them («0, 12»; the baler's «11′; 11′′; 12; 12′»): no leader says which of two overlapping
+    # dots it points at (the baler's 12, 0.5 mm from 11′′, found none and was set 80 mm off, stop 62)
+    lettered = [(float(f.x[j]), dots[j], str(j), f"point {j}") for j in range(0, n, every)]
+    lettered += [(float(f.x_all[j]), z, f.added_label(j), "added point number") for j, z in zip(f.added, added)]
+    for group in coinciding([z for _, z, _, _ in lettered]):
+        members = sorted((lettered[i] for i in group), key=lambda m: m[0])
+        at = sum(m[1] for m in members) / len(members)
+        # «0, 12» as the lab letters it; «9′; 14′» where a number is primed (after a prime the comma stands
+        # apart under it, a mark of its own by the prime's number, in the sheet's font)
+        text = ("; " if any("′" in m[2] for m in members) else ", ").join(m[2] for m in members)
+        step = members[0][3] if len(members) == 1 else "point " + text
+        # every other point a rival (drawing.plans position_numbers): the number nearer its own point
+        # than any other, else on a leader to it that passes none; outside the curve first
+        mine = [m[1] for m in members]
+        rivals = tuple(z for z in (*dots, *added) if min(abs(z - m) for m in mine) > 1e-6)
+        toward = at - middle if abs(at - middle) > 1e-6 else 1 + 1j
+        asked = [LabelRequest(at, text, toward, NUM, step=step, sight=True, across=False, rivals=rivals)]
+        if all(m[2] != "0" for m in members):   # point 0 lies on the I* axis, its own projection: its number
+            asked.append(LabelRequest(at, text, toward, NUM, step=step, across=False, rivals=rivals))   # never across it
+        numbers.append(asked)
     for name, s, b, tx, ty in (("max", tg["s_max"], k, tg["touch_max_x"], tg["touch_max_y"]),
                                ("min", tg["s_min"], l, tg["touch_min_x"], tg["touch_min_y"])):
         # past the touch point 15 mm across, no more than TANGENT_PAST along the line: a steep tangent
@@ -853,22 +864,40 @@ def energy_mass(f: Flywheel, lang: str = "uk", projections: tuple[float, float] 
     # of a curve point near it moves (review 58: point 12's number took l's place, l ran into |kl|'s text)
     place_labels(rec, labels[-2:], layer=LAYER)
     curve = np.asarray([complex(x, y) for x, y in drawn(X, Y)])
-    for j, z in zip(f.added, added):   # the added points' numbers (6′) asked as the divisions' are
-        others = tuple(r for r in (*dots, *added) if abs(r - z) > 1e-6)
-        toward = z - middle if abs(z - middle) > 1e-6 else 1 + 1j
-        numbers.append([LabelRequest(z, f.added_label(j), toward, NUM, step="added point number", sight=True,
-                                     across=False, rivals=others),
-                        LabelRequest(z, f.added_label(j), toward, NUM, step="added point number", across=False,
-                                     rivals=others)])
     fence = _value_rows(rec)       # no number in the row of the I* values
     for asked in numbers:        # a point's number beside it with no line between them where it can be (a
         # number across a projection reads as that line's), else on a leader that crosses no branch of
         # the French curve where one can (it would read as a point of that branch): drawing.labels
-        place_beside(rec, asked, layer=LAYER, avoid=curve, keep_whole=KEEP_WHOLE)
+        place_beside(rec, asked, layer=LAYER, avoid=curve, keep_whole=KEEP_WHOLE, farthest=NUMBER_FARTHEST)
     if fence:                    # taken out again, pieces too (a number beside its point may break a thin line)
         rec.items[:] = [p for p in rec.items if p.step != "values' row"]
     place_labels(rec, labels[1:-2], layer=LAYER)
     return rec
+
+
+COINCIDE = 2.0 * POINT_INK["dot"]    # mm: two points' dots nearer than this overlap
+NUMBER_FARTHEST = FAR[-1] * math.sqrt(2.0)   # mm of paper at most between a point and its number: the placer's
+#                                      farthest leader ring (32 mm, √2 times that along a diagonal); a number that
+#                                      finds no place so near is left off, not set past the drawing's edge
+
+
+def coinciding(at: list[complex]) -> list[list[int]]:
+    """The points grouped where their dots overlap (nearer than ``COINCIDE``, chained: 12′ on 12 on 11′′
+    is one group), each group in the order of its first point, the points in ``at``'s order."""
+    group = list(range(len(at)))
+
+    def root(i: int) -> int:
+        while group[i] != i:
+            i = group[i]
+        return i
+    for i in range(len(at)):
+        for k in range(i):
+            if abs(at[i] - at[k]) < COINCIDE:
+                group[root(i)] = root(k)
+    out: dict[int, list[int]] = {}
+    for i in range(len(at)):
+        out.setdefault(root(i), []).append(i)
+    return sorted(out.values(), key=lambda g: g[0])
 
 
 def _value_rows(rec: Record) -> list[Primitive]:

@@ -1357,7 +1357,7 @@ def leads(ob: Obstacles, req: LabelRequest, ink: Box, rings: tuple[float, ...] =
 
 @_remembered
 def place_beside(record: Record, asked: list[LabelRequest], layer: str = "labels", beside: float = NUMBER_BESIDE,
-                 avoid: np.ndarray | None = None, keep_whole: tuple[str, ...] = ()) -> str:
+                 avoid: np.ndarray | None = None, keep_whole: tuple[str, ...] = (), farthest: float | None = None) -> str:
     """Place one label near its point with a checked leader — a diagram's numbered point among its
     ``rivals`` (the other points: ``LabelRequest.rivals``). ``asked``: the same label asked in order
     of preference (in sight first, say); the last is the one set on a leader. In this order:
@@ -1370,7 +1370,10 @@ def place_beside(record: Record, asked: list[LabelRequest], layer: str = "labels
     3. "broken": beside it within ``beside`` mm where only thin lines are in the way, broken under it
        (``_breaking``) — never a line whose step is in ``keep_whole``;
     4. "leader": as 2. with the label merely ``RIVAL_BOX`` clear of the rivals;
-    5. "leader": on any leader ``_far`` allows; 6. "placed": as ``place_labels`` places it.
+    5. "leader": on any leader ``_far`` allows; 6. "placed": as ``place_labels`` places it — where
+       ``farthest`` is given, only where that sets it within ``farthest`` mm of its point, else "off":
+       left off (``place_labels``' last resorts, past the drawing's edge, set the baler's 12 80 mm away
+       on its own projection line, stop 62).
 
     In 2. a leader across ``avoid`` is tried only after 3. and 4. found none that keeps off it (stop 55:
     a number beside its point with a thin line broken under it, or on a looser leader, reads as its
@@ -1417,7 +1420,12 @@ def place_beside(record: Record, asked: list[LabelRequest], layer: str = "labels
         cand = leads(ob.near(req.at, FAR[-1] + reach), req, ink, lazy=True)   # near a steep line where no spot
         k = cand.first(req, None, off_lines=False)                    # keeps clear (a crowded diagram)
     if k is None:
+        before = list(record.items)
         place_labels(record, asked[:1], layer=layer)
+        if farthest is not None and any(p.kind == "text" and _box_gap(p.ink(), req.at) > farthest
+                                        for p in record.items[len(before):]):
+            record.items[:] = before
+            return "off"
         return "placed"
     a, b, start = complex(cand.a[k]), complex(cand.b[k]), complex(cand.starts[k])
     record.segment((a.real, a.imag), (b.real, b.imag), role="label", layer=layer, step=req.step)
