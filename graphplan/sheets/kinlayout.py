@@ -525,7 +525,10 @@ def finer_s(dr: Drafter, k) -> list[tuple[float, float, float]]:
     the composition's band holds it and it reads closer to the exact values. The short s ordinates
     are what the ruler's half millimetre amplifies in v and a: review 55 #3's beam pump drew its
     stroke 44 mm high (μs 0,004) in an 85-mm band, a_D 32.8 % off at a position; at 0,0025 it is
-    71 mm high."""
+    71 mm high. Then the series' one next finer μs past that allowance (the stroke up to
+    ``PAST_ALLOWANCE`` times it: taller than 100 mm by less than the series' step), where the sheet
+    holds it — review 62 F4: the offset pump's 120.9-mm stroke 60.5 mm high at 0,002 (the allowance's
+    finest), a_B 10.2 % off; at 0,001 (121 mm) 5.1 %."""
     from graphplan.sheets.kinematics import first_options, _drawn, S_HEIGHT
     long_, tall = factors(k)
     if tall >= PAST_ALLOWANCE * HEIGHTS[0] - 1e-9:
