@@ -237,17 +237,20 @@ def _scales_tried(d: Diagrams, lang: str) -> str:
     60 mm high at μs 0,002 in a 300-mm zone, the notes silent). Empty where none was."""
     uk = lang == "uk"
     us = unit(d.unit if d.unit == "m" else "rad", lang) + "/" + unit("mm", lang)
-    said = []
+    said, why_not = [], {}
     for mu_s, why in d.s_tried:
         if isinstance(why, float) and not math.isfinite(why):
             continue
-        value = f"{num(mu_s, lang, 4)} {us}"
         if isinstance(why, float):
-            said.append(f"{value}: {fixed(why, lang, 1)} %")
+            said.append(f"{num(mu_s, lang, 4)} {us}: {fixed(why, lang, 1)} %")
         else:
-            said.append(f"{value}: " + {"room": "аркуш не вміщує" if uk else "the sheet does not hold it",
-                                         "flat": "діаграми v, a нижчі" if uk else "v, a drawn lower",
-                                         "wrong": "якісно хибні" if uk else "qualitatively wrong"}[why])
+            why_not.setdefault(why, []).append(num(mu_s, lang, 4))
+    for why, values in why_not.items():     # one reason said once: "0,01 і 0,005 рад/мм: аркуш не вміщує"
+        many = len(values) > 1
+        said.append(f"{_and(values, uk)} {us}: " + {
+            "room": "аркуш не вміщує" if uk else f"the sheet does not hold {'them' if many else 'it'}",
+            "flat": "діаграми v, a нижчі" if uk else "v, a drawn lower",
+            "wrong": "якісно хибні" if uk else "qualitatively wrong"}[why])
     if not said:
         return ""
     sym = mu(scale_symbols(d)[0])
