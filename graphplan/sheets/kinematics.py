@@ -370,6 +370,13 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, Drafter
             if _checked(dr, nat, tall):       # kept too: its notes now say the s scales tried (longer)
                 p = tall
                 break
+            if tall != p and dr.s_tried.get(tall.diagrams):
+                # the closer drawing before the sentence on the other s scales tried: the jaw crusher's
+                # ψ3 at 0,005 (ε3 6.3 %) lost its room to that sentence and fell back to 0,01 (17 %)
+                dr.s_tried[tall.diagrams] = ()
+                if _checked(dr, nat, tall):
+                    p = tall
+                    break
             if tall == p:                      # … measured anew: chosen again allowing for them
                 p = choose()
     return p, nat, dr
