@@ -367,6 +367,7 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, Drafter
         # position) though, its notes allowed for, (0.8, 0.9) holds and reads closer
         for _ in range(3):
             tall = taller_in_place(dr, nat, f, p)
+            notes_were = list(nat.notes)
             if _checked(dr, nat, tall):       # kept too: its notes now say the s scales tried (longer)
                 p = tall
                 break
@@ -374,6 +375,7 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, Drafter
                 # the closer drawing before the sentence on the other s scales tried: the jaw crusher's
                 # ψ3 at 0,005 (ε3 6.3 %) lost its room to that sentence and fell back to 0,01 (17 %)
                 dr.s_tried[tall.diagrams] = ()
+                nat.notes[:] = notes_were
                 if _checked(dr, nat, tall):
                     p = tall
                     break
