@@ -10142,3 +10142,80 @@ magnitude = 1500
 stroke = "working"
 direction = "oppose"
 '''
+
+
+
+# diag62: review 62 F4 (b_pump_en), an English offset crank-slider of a plunger pump: e = 0.03 m, crank 0.06, rod
+# 0.25 m, its 120.9-mm stroke drawn 60.5 mm high at μs 0,002 on the A1 (a_B 10.2 % off) where 0,001 reads 5.1 %
+DIAG62_PUMP = """\
+# review62 (b): in ENGLISH, an offset (eccentric) crank-slider of a single-acting plunger pump: crank OA 0.06 m
+# CLOCKWISE at 150 rpm, rod AB 0.25 m, the plunger B on a horizontal guide 0.03 m below O; the discharge
+# pressure on the plunger, 1500 N against it over its working (slow) stroke, building up over the first
+# 40 mm (profile); masses by length 25 kg/m, the plunger 5 kg; [dynamics] to a 1500-rpm motor, δ = 0.03.
+title = "Дезаксіальний кривошипно-повзунний механізм плунжерного насоса"
+title_en = "Offset crank-slider of a plunger pump"
+designation = "TMM.KP.62.820"
+lang = "en"
+
+[sheet]
+student = "Reviewer R. R."
+teacher = "Teacher T. T."
+group = "MB-62"
+organisation = "NULES of Ukraine"
+
+[frame.points]
+O = [0, 0]
+
+[frame.guides]
+x = { through = [0, -0.03], angle_deg = 0, title_uk = "плунжера 3", title_en = "of the plunger 3" }
+
+[crank]
+name = "OA"
+pivot = "O"
+pin = "A"
+length = 0.06
+rpm = 150
+direction = "cw"
+points = { S1 = 0.3 }
+
+[[link]]
+name = "AB"
+number = 2
+joints = ["A", "B"]
+length = 0.25
+points = { S2 = 0.35 }
+
+[[link]]
+name = "B"
+number = 3
+joints = ["B"]
+slides_on = "x"
+mass = 5
+
+[branch]
+B = 1
+
+[positions]
+count = 12
+start = "working"
+accel = [2, 9]
+force_phi_deg = 120
+output = "B"
+
+[loads]
+g = 9.81
+mass_per_length = 25
+inertia_factor = 0.1
+
+[[force]]
+point = "B"
+magnitude = 1500
+stroke = "working"
+direction = "oppose"
+profile = [[0, 0.2], [0.04, 1], [0.13, 1]]
+
+[dynamics]
+delta = 0.03
+efficiency = 0.85
+synchronous_rpm = 1500
+"""

@@ -166,6 +166,9 @@ class Diagrams:
     angle_error_deg: float = 0.0    # tangents: the bound of each tangent's angular error
     correct: bool = False           # chords: the lab's area correction applied
     redrawn: Any = None             # graphic.redraw.Redrawing: how the drawing was changed to be right
+    # the sheet's other s scales tried (kinlayout.taller_in_place): (μs, the largest |δ| at the positions, %,
+    # or "room" where the sheet does not hold that drawing, "flat" where its v or a would be lower, "wrong")
+    s_tried: tuple = ()
     _trials: list | None = field(default=None, repr=False, compare=False)   # ``alternatives``, once measured
     # ``warnings`` once diagnosed: shared with the copies ``dataclasses.replace`` makes (the other
     # language's: ``diagnose`` words both) — a drawing only measured (a redrawing's candidate size,

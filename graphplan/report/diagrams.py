@@ -225,9 +225,36 @@ def short_limit_note(d: Diagrams, lang: str, table: int | None = None,
                 else "; no other construction tried keeps within 5 %")
     else:
         tail = ""
-    tail = _finer_worse(d, trials, lang) + tail
+    tail = _finer_worse(d, trials, lang) + _scales_tried(d, lang) + tail
     return ((f"Значення з діаграм виходять за межу 5 % лабораторної роботи{ref}: " if uk else
              f"Values read off the diagrams exceed the 5 % the lab allows{ref}: ") + "; ".join(parts) + tail)
+
+
+def _scales_tried(d: Diagrams, lang: str) -> str:
+    """The other s scales the sheet tried for these diagrams (``Diagrams.s_tried``, kinlayout
+    ``taller_in_place``), each with its largest |δ| at the positions or why it is not drawn — a
+    teacher asks a diagram past 5 % whether a larger s was tried (review 62 F4: the offset pump's s
+    60 mm high at μs 0,002 in a 300-mm zone, the notes silent). Empty where none was."""
+    uk = lang == "uk"
+    us = unit(d.unit if d.unit == "m" else "rad", lang) + "/" + unit("mm", lang)
+    said, why_not = [], {}
+    for mu_s, why in d.s_tried:
+        if isinstance(why, float) and not math.isfinite(why):
+            continue
+        if isinstance(why, float):
+            said.append(f"{num(mu_s, lang, 4)} {us}: {fixed(why, lang, 1)} %")
+        else:
+            why_not.setdefault(why, []).append(num(mu_s, lang, 4))
+    for why, values in why_not.items():     # one reason said once: "0,01 і 0,005 рад/мм: аркуш не вміщує"
+        many = len(values) > 1
+        said.append(f"{_and(values, uk)} {us}: " + {
+            "room": "аркуш не вміщує" if uk else f"the sheet does not hold {'them' if many else 'it'}",
+            "flat": "діаграми v, a нижчі" if uk else "v, a drawn lower",
+            "wrong": "якісно хибні" if uk else "qualitatively wrong"}[why])
+    if not said:
+        return ""
+    sym = mu(scale_symbols(d)[0])
+    return (f"; також за {sym} " if uk else f"; also tried at {sym} ") + "; ".join(said)
 
 
 SMALL_SHARE = 0.25   # a reading's exact value under this share of the cycle's |max|: a small value

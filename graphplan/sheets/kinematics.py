@@ -262,6 +262,7 @@ class Drafter:
 
     def __post_init__(self) -> None:
         self.memo: dict = {}
+        self.s_tried: dict = {}     # size → the other s scales tried for it (kinlayout.taller_in_place)
 
     def _once(self, key, make):
         if key not in self.memo:
@@ -285,10 +286,13 @@ class Drafter:
         from graphplan.graphic.diagrams import chord_diagrams
         o = self.opts
         if lang != "uk":
-            return self._once(("diag", k, lang), lambda: replace(self.diagrams(k, "uk"), lang=lang))
-        return self._once(("diag", k, lang), lambda: chord_diagrams(
-            self.st, precision=o.precision, lang=lang, **diagram_options(self.st, k, o.positions, o.precision,
-                                                                         self.room, self.floor)))
+            d = self._once(("diag", k, lang), lambda: replace(self.diagrams(k, "uk"), lang=lang))
+        else:
+            d = self._once(("diag", k, lang), lambda: chord_diagrams(
+                self.st, precision=o.precision, lang=lang, **diagram_options(self.st, k, o.positions, o.precision,
+                                                                             self.room, self.floor)))
+        tried = self.s_tried.get(k, ())
+        return d if d.s_tried == tried else replace(d, s_tried=tried)
 
     def lines(self, mu: dict[str, float]) -> dict[str, list[Record]]:
         """The plans at the scales ``mu``, their lines only (no lettering): family → records."""
@@ -418,11 +422,20 @@ def plan(st: Study, f: Form, opts: SheetOptions) -> tuple[Plan, Natural, Drafter
         # position) though, its notes allowed for, (0.8, 0.9) holds and reads closer
         for _ in range(3):
             tall = taller_in_place(dr, nat, f, p)
-            if tall == p:
-                break
-            if _checked(dr, nat, tall):
+            notes_were = list(nat.notes)
+            if _checked(dr, nat, tall):       # kept too: its notes now say the s scales tried (longer)
                 p = tall
                 break
+            if tall != p and dr.s_tried.get(tall.diagrams):
+                # the closer drawing before the sentence on the other s scales tried: the jaw crusher's
+                # ψ3 at 0,005 (ε3 6.3 %) lost its room to that sentence and fell back to 0,01 (17 %)
+                dr.s_tried[tall.diagrams] = ()
+                nat.notes[:] = notes_were
+                if _checked(dr, nat, tall):
+                    p = tall
+                    break
+            if tall == p:                      # … measured anew: chosen again allowing for them
+                p = choose()
     return p, nat, dr
 
 

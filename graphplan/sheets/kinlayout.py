@@ -29,6 +29,11 @@ SET_LARGEST = 1.25     # a set's principal segments grow to at most this times t
 DIAGRAM_SIZES = (1.0, 0.8, 0.64, 0.5)   # the diagrams drawn smaller only where a sheet cannot hold them
 HEIGHTS = (1.25, 0.5)    # a set's diagrams' height factors: from s at most 100 mm high down to 40 mm …
 HEIGHT_STEP = 0.05       # … in these steps (4 mm of s's allowance)
+# One sheet's s diagram drawn taller (``finer_s``) also at the series' next finer μs past the 100-mm allowance,
+# s then up to this many times the allowance (the series' largest step, 5 → 10), where the composition holds
+# it and it reads closer (graphic.diagrams.fitted_scale, review 61 #2's rule): review 62 F4, the offset pump
+# drew its 121-mm stroke 60.5 mm high at μs 0,002 (the allowance's finest) in a 290-mm block, a_B 10.2 % off
+PAST_ALLOWANCE = 2.0
 LEAST_TALLER = 4         # a flat one-factor drawing: this many steps taller tried for one that is not
 TARGETS = {"position": 70.0, "velocity": 100.0, "acceleration": 120.0}   # principal segments at factor 1, mm
 
@@ -486,14 +491,28 @@ def taller_in_place(dr: Drafter, nat: Natural, f: Form, p: Plan) -> Plan:
     heights = {long_: [round(tall + j * HEIGHT_STEP, 6) for j in range(int(round((1.0 - tall) / HEIGHT_STEP)), 0, -1)]}
     for length in (x for x in DIAGRAMS_SHRUNK if x > long_ + 1e-9):
         heights[length] = [round(1.0 - 0.1 * j, 6) for j in range(int(round((1.0 - length) / 0.1)) + 1)]
-    ks = [(length, t) for length, ts in heights.items() for t in ts] + finer_s(dr, p.diagrams)
+    scales = finer_s(dr, p.diagrams)
+    ks = [(length, t) for length, ts in heights.items() for t in ts] + scales
+    tried = {dr.diagrams(p.diagrams).mu_s: score[0]}     # μs → its largest |δ| (or why not drawn), for the notes
     for k in ks:
+        mu = dr.diagrams(k).mu_s if k in scales else None
         if not dr.diagrams_right(k):
+            if mu is not None:
+                tried.setdefault(mu, "wrong")
             continue
         got = judged(k)        # no better read: not drawn in both languages to be measured
-        if got < score and composed_fits(nat, f, p, Leaf("diagrams", *diagrams_size(dr, nat, k))) \
+        if mu is not None and not isinstance(tried.get(mu), float):
+            tried[mu] = ("room" if not composed_fits(nat, f, p, Leaf("diagrams", *diagrams_size(dr, nat, k)))
+                         else "flat" if flat(dr, k) > flat(dr, p.diagrams) else got[0])
+        # past the 100-mm allowance only where it reads closer, not for its size at the same |δ| (the lab
+        # crank-slider's given poles drew s 200 mm and v, a twice as tall at 0,0005 for 9.59 % beside 9.6 %)
+        closer = got < score if mu is None or k[1] <= HEIGHTS[0] + 1e-9 else got[0] < score[0]
+        if closer and composed_fits(nat, f, p, Leaf("diagrams", *diagrams_size(dr, nat, k))) \
                 and flat(dr, k) <= flat(dr, p.diagrams):
             best, score = k, got
+    # the notes say the other s scales tried (review 62 F4: a diagram past 5 % and no word of a larger s)
+    chosen = dr.diagrams(best).mu_s
+    dr.s_tried[best] = tuple(sorted(((mu, why) for mu, why in tried.items() if mu != chosen), reverse=True))
     from dataclasses import replace
     return p if best == p.diagrams else replace(p, diagrams=best)
 
@@ -509,13 +528,17 @@ def finer_s(dr: Drafter, k) -> list[tuple[float, float, float]]:
     the composition's band holds it and it reads closer to the exact values. The short s ordinates
     are what the ruler's half millimetre amplifies in v and a: review 55 #3's beam pump drew its
     stroke 44 mm high (μs 0,004) in an 85-mm band, a_D 32.8 % off at a position; at 0,0025 it is
-    71 mm high."""
-    from graphplan.sheets.kinematics import first_options, _drawn
+    71 mm high. Then the series' one next finer μs past that allowance (the stroke up to
+    ``PAST_ALLOWANCE`` times it: taller than 100 mm by less than the series' step), where the sheet
+    holds it — review 62 F4: the offset pump's 120.9-mm stroke 60.5 mm high at 0,002 (the allowance's
+    finest), a_B 10.2 % off; at 0,001 (121 mm) 5.1 %."""
+    from graphplan.sheets.kinematics import first_options, _drawn, S_HEIGHT
     long_, tall = factors(k)
-    if tall >= HEIGHTS[0] - 1e-9:
+    if tall >= PAST_ALLOWANCE * HEIGHTS[0] - 1e-9:
         return []
     o = dr.opts
-    mu = dr.diagrams(k).mu_s
+    d = dr.diagrams(k)
+    mu = d.mu_s
     out, seen = [], {mu}
     for j in range(1, int(round((HEIGHTS[0] - tall) / HEIGHT_STEP)) + 1):
         t = round(min(HEIGHTS[0], tall + j * HEIGHT_STEP), 6)
@@ -523,6 +546,21 @@ def finer_s(dr: Drafter, k) -> list[tuple[float, float, float]]:
         mu_t = _drawn(dr.st, first_options(dr.st, k3, o.positions), 0.0).mu_s
         if mu_t < mu - 1e-12 and mu_t not in seen:
             seen.add(mu_t)
+            out.append(k3)
+    # past the allowance: the series' one next finer value, s taller than 100 mm by less than its step
+    import numpy as np
+    from graphplan.exact.positions import exact_motion
+    from graphplan.graphic.diagrams import CYCLE
+    from graphplan.graphic.scales import at_most
+    span = float(np.ptp(exact_motion(d.study, d.output, np.arange(CYCLE + 1) * 360.0 / CYCLE)[0]))
+    finest = min(seen)
+    nxt = at_most(finest * (1 - 1e-6))
+    t = max(tall, HEIGHTS[0]) + HEIGHT_STEP * max(1, math.ceil(
+        (span / nxt / S_HEIGHT - max(tall, HEIGHTS[0])) / HEIGHT_STEP - 1e-6))
+    t = round(t, 6)
+    if t <= PAST_ALLOWANCE * HEIGHTS[0] + 1e-9:
+        k3 = (long_, t, tall)
+        if _drawn(dr.st, first_options(dr.st, k3, o.positions), 0.0).mu_s < finest - 1e-12:
             out.append(k3)
     return out
 
