@@ -45,7 +45,7 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
                travel: dict[tuple[str, str], list[float]] | None = None) -> None:
     """The links of one position: bars between joints, slotted links along their guides, blocks;
     a yoke as one body (``draw_yoke``: its slot and rod, its spans ``yokes`` kept over the turn); a
-    wedge's face over its block's whole ``travel`` along it (``wedge_travel``)."""
+    wedge's face at a thick position over its block's whole ``travel`` along it (``wedge_travel``)."""
     mech = sc.mech
     pts = joints_at(sc, lay)
     width = None if thick else 0.3
@@ -63,8 +63,10 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
             for slider in carriers[name]:
                 g = mech.guides[mech.links[slider].slides_on]
                 base, ug = lay.poses[name].at(g.through), lay.poses[name].direction(g.angle)
+                # a wedge at a thick position: its face over the block's whole travel (a thin
+                # position's face line, one of twelve, to just past its block)
                 a, b = slot_line(base, ug, own, [pts[p] for p in mech.links[slider].local]
-                                 + [base + t * ug for t in (travel or {}).get((name, slider), ())])
+                                 + [base + t * ug for t in (travel or {}).get((name, slider), ()) if thick])
                 if thick and link.slides_on is not None and _wedge_sides(
                         rec, [pts[p] for p in joints], complex(a), complex(b), lay.poses[name].direction(0.0),
                         role, step):
