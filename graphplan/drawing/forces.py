@@ -100,16 +100,35 @@ def _wedge_outline(fp: ForcePlans, link: str, mu: float) -> list[complex]:
     # the face over the blocks' whole travel along it, as the position plan draws it (review 62: the
     # textbook's wedge covers the block's travel; over the force position's block alone its back stood
     # on the ram's axis, the ram's arrows along it)
-    turn = fp.ks.st.solve(np.linspace(0.0, 360.0, YOKE_TURN, endpoint=False))
-    tb = turn.bodies[link]
-    for i in range(YOKE_TURN):
-        b0, ui = complex(tb.at(g.through)[0][i]) / mu, complex(np.exp(1j * (tb.theta[i] + g.angle)))
-        blocks += [base + ((complex(turn.bodies[r].at(z)[0][i]) / mu - b0) * ui.conjugate()).real * u
-                   for r in riders for z in mech.links[r].local.values()]
+    blocks += [base + t / mu * u for t in _wedge_travel(fp, link, riders)]
     a, b = (complex(z) for z in slot_line(base, u, [x], blocks))
     if abs(((x - a) * u.conjugate()).imag) <= WEDGE_OFF_MM:     # the face through B: the textbook's triangle
         return wedge_body(a, b, x, complex(np.exp(1j * body.theta[0]))) or [a, b]   # on its guide (review 62)
     return [a, x, b, a]
+
+
+_TRAVEL: dict[tuple[int, str], tuple[object, list[float]]] = {}
+
+
+def _wedge_travel(fp: ForcePlans, link: str, riders: list[str]) -> list[float]:
+    """The wedge's blocks' farthest places along its face over the turn (m from the slot guide's
+    point; ``YOKE_TURN`` steps), once per analysis: the outline is asked for some forty times a sheet."""
+    import weakref
+
+    import numpy as np
+    hit = _TRAVEL.get((id(fp.ks), link))
+    if hit is not None and hit[0]() is fp.ks:
+        return hit[1]
+    mech = fp.ks.mech
+    g = mech.guides[mech.links[riders[0]].slides_on]
+    turn = fp.ks.st.solve(np.linspace(0.0, 360.0, YOKE_TURN, endpoint=False))
+    tb = turn.bodies[link]
+    along = [((complex(turn.bodies[r].at(z)[0][i]) - complex(tb.at(g.through)[0][i]))
+              * complex(np.exp(-1j * (tb.theta[i] + g.angle)))).real
+             for i in range(YOKE_TURN) for r in riders for z in mech.links[r].local.values()]
+    out = [min(along), max(along)]
+    _TRAVEL[(id(fp.ks), link)] = (weakref.ref(fp.ks), out)
+    return out
 
 
 def _link_outline(fp: ForcePlans, link: str, mu: float | None = None, framed: bool = True) -> list[complex]:
