@@ -97,10 +97,38 @@ def _wedge_outline(fp: ForcePlans, link: str, mu: float) -> list[complex]:
     u = complex(np.exp(1j * (body.theta[0] + g.angle)))
     x = complex(body.at(lk.local[lk.joints[0]])[0][0]) / mu
     blocks = [complex(kin.bodies[r].at(z)[0][0]) / mu for r in riders for z in mech.links[r].local.values()]
+    # the face over the blocks' whole travel along it, as the position plan draws it (review 62: the
+    # textbook's wedge covers the block's travel; over the force position's block alone its back stood
+    # on the ram's axis, the ram's arrows along it)
+    blocks += [base + t / mu * u for t in _wedge_travel(fp, link, riders)]
     a, b = (complex(z) for z in slot_line(base, u, [x], blocks))
     if abs(((x - a) * u.conjugate()).imag) <= WEDGE_OFF_MM:     # the face through B: the textbook's triangle
         return wedge_body(a, b, x, complex(np.exp(1j * body.theta[0]))) or [a, b]   # on its guide (review 62)
     return [a, x, b, a]
+
+
+_TRAVEL: dict[tuple[int, str], tuple[object, list[float]]] = {}
+
+
+def _wedge_travel(fp: ForcePlans, link: str, riders: list[str]) -> list[float]:
+    """The wedge's blocks' farthest places along its face over the turn (m from the slot guide's
+    point; ``YOKE_TURN`` steps), once per analysis: the outline is asked for some forty times a sheet."""
+    import weakref
+
+    import numpy as np
+    hit = _TRAVEL.get((id(fp.ks), link))
+    if hit is not None and hit[0]() is fp.ks:
+        return hit[1]
+    mech = fp.ks.mech
+    g = mech.guides[mech.links[riders[0]].slides_on]
+    turn = fp.ks.st.solve(np.linspace(0.0, 360.0, YOKE_TURN, endpoint=False))
+    tb = turn.bodies[link]
+    along = [((complex(turn.bodies[r].at(z)[0][i]) - complex(tb.at(g.through)[0][i]))
+              * complex(np.exp(-1j * (tb.theta[i] + g.angle)))).real
+             for i in range(YOKE_TURN) for r in riders for z in mech.links[r].local.values()]
+    out = [min(along), max(along)]
+    _TRAVEL[(id(fp.ks), link)] = (weakref.ref(fp.ks), out)
+    return out
 
 
 def _link_outline(fp: ForcePlans, link: str, mu: float | None = None, framed: bool = True) -> list[complex]:
@@ -291,6 +319,10 @@ def _on_own_line(z: complex, u: complex, length: float, links: list[tuple[comple
     arrows = [(t, h) for _, t, h in drawn]
     mine = [(p, q) for p, q in links if _on_segment(z, p, q)]          # the point's own links' lines
     off = [(p, q) for p, q in links if not _on_segment(z, p, q)]
+    # the bars that END at the point (the ram's C–D at C): its line runs on free past the point, so an
+    # arrow laid over such a bar, only its head showing (review 62: Φ4, G5, Φ5 up the ram from C), gives
+    # way to the free stretch, one after the other (``past``), else to a place slid along the line
+    ending = [(p, q) for p, q in mine if abs(q - p) > 1.0 and min(abs(z - p), abs(z - q)) < 0.5]
     walls = [(p, q) for p, q in outlines if _to_segment(z, p, q) > OWN_BLOCK_MM]
     block = len(walls) < len(outlines) and any(_to_segment(z, p, q) <= OWN_BLOCK_MM for p, q in outlines)
     others = [w for w in points if abs(w - z) > 0.5]
@@ -337,6 +369,8 @@ def _on_own_line(z: complex, u: complex, length: float, links: list[tuple[comple
             side = 1.0 if dot((a + b) / 2 - z, u) > 0 else -1.0
             if reach[side] > 0.5:
                 continue                 # another arrow of the point lies on that half of the line
+            if over and _run_along(a, b, ending) > 0.5 * abs(b - a):
+                continue                 # mostly over a bar ending at the point: its free side instead
             if (_run_along(a, b, mine) > 1.0) == over and fits(a, b, head):
                 return a, b
         return None

@@ -41,9 +41,11 @@ def guide_carriers(sc: Scheme) -> dict[str, list[str]]:
 
 
 def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "link",
-               step: str = "", yokes: dict[str, YokeSpans] | None = None) -> None:
+               step: str = "", yokes: dict[str, YokeSpans] | None = None,
+               travel: dict[tuple[str, str], list[float]] | None = None) -> None:
     """The links of one position: bars between joints, slotted links along their guides, blocks;
-    a yoke as one body (``draw_yoke``: its slot and rod, its spans ``yokes`` kept over the turn)."""
+    a yoke as one body (``draw_yoke``: its slot and rod, its spans ``yokes`` kept over the turn); a
+    wedge's face at a thick position over its block's whole ``travel`` along it (``wedge_travel``)."""
     mech = sc.mech
     pts = joints_at(sc, lay)
     width = None if thick else 0.3
@@ -60,8 +62,11 @@ def draw_links(rec: Record, sc: Scheme, lay: Layout, thick: bool, role: str = "l
             own = [pts[p] for p in joints + [q for q in extra_points(link) if q in pts]]
             for slider in carriers[name]:
                 g = mech.guides[mech.links[slider].slides_on]
-                a, b = slot_line(lay.poses[name].at(g.through), lay.poses[name].direction(g.angle), own,
-                                 [pts[p] for p in mech.links[slider].local])
+                base, ug = lay.poses[name].at(g.through), lay.poses[name].direction(g.angle)
+                # a wedge at a thick position: its face over the block's whole travel (a thin
+                # position's face line, one of twelve, to just past its block)
+                a, b = slot_line(base, ug, own, [pts[p] for p in mech.links[slider].local]
+                                 + [base + t * ug for t in (travel or {}).get((name, slider), ()) if thick])
                 if thick and link.slides_on is not None and _wedge_sides(
                         rec, [pts[p] for p in joints], complex(a), complex(b), lay.poses[name].direction(0.0),
                         role, step):
@@ -175,7 +180,28 @@ def _wedge_sides(rec: Record, joints: list[complex], a: complex, b: complex, u_s
     return True
 
 
-def wedge_bodies(sc: Scheme, lay: Layout) -> list[list[complex]]:
+def wedge_travel(sc: Scheme, layouts: list[Layout]) -> dict[tuple[str, str], list[float]]:
+    """A wedge's (a sliding link carrying a slot, not a yoke) blocks' farthest places along its face
+    over the ``layouts`` drawn (mm from the slot guide's point): the face is drawn over the block's whole
+    travel, as the textbook's wedge covers it (review 62: over the block's place at each position alone,
+    the triangle's back stood on the ram's axis at every position)."""
+    mech = sc.mech
+    out: dict[tuple[str, str], list[float]] = {}
+    for name, carried in guide_carriers(sc).items():
+        link = mech.links.get(name)
+        if link is None or link.slides_on is None or yoke_guide(mech, name) is not None:
+            continue
+        for slider in carried:
+            g = mech.guides[mech.links[slider].slides_on]
+            along = [((lay.poses[slider].at(z) - lay.poses[name].at(g.through))
+                      * lay.poses[name].direction(g.angle).conjugate()).real
+                     for lay in layouts for z in mech.links[slider].local.values()]
+            if along:
+                out[(name, slider)] = [min(along), max(along)]
+    return out
+
+
+def wedge_bodies(sc: Scheme, lay: Layout, travel: dict[tuple[str, str], list[float]] | None = None) -> list[list[complex]]:
     """The wedges drawn as their triangles on their guides at this position (``_wedge_sides``,
     ``linkshape.wedge_body``: a sliding link whose carried slot runs through its own joint), mm — the
     frame's hatching stops at them (the ram's guide of review 62's press runs down into the wedge)."""
@@ -189,8 +215,9 @@ def wedge_bodies(sc: Scheme, lay: Layout) -> list[list[complex]]:
         own = [pts[p] for p in list(link.joints) + [q for q in extra_points(link) if q in pts]]
         for slider in carried:
             g = mech.guides[mech.links[slider].slides_on]
-            a, b = (complex(z) for z in slot_line(lay.poses[name].at(g.through), lay.poses[name].direction(g.angle),
-                                                  own, [pts[p] for p in mech.links[slider].local]))
+            base, ug = lay.poses[name].at(g.through), lay.poses[name].direction(g.angle)
+            a, b = (complex(z) for z in slot_line(base, ug, own, [pts[p] for p in mech.links[slider].local]
+                                                  + [base + t * ug for t in (travel or {}).get((name, slider), ())]))
             u = (b - a) / abs(b - a)
             X = pts[link.joints[0]]
             if all(abs(((pts[j] - a) * u.conjugate()).imag) <= WEDGE_OFF_MM for j in link.joints):
@@ -412,7 +439,8 @@ def draw_frame(rec: Record, sc: Scheme, layouts: list[Layout], thick: list[Layou
                     * u.conjugate()).real, block_size(sc, s)[0] / 2) for lay in (thick or []) for s in sliders]
         # … and at a wedge's triangle drawn over it (review 62: the ram's guide run down into the wedge,
         # its strokes across the wedge's side): the guide's line goes on, its hatching stops
-        wedges = [w for lay in (thick or []) for w in wedge_bodies(sc, lay)]
+        travel = wedge_travel(sc, drawn or layouts)
+        wedges = [w for lay in (thick or []) for w in wedge_bodies(sc, lay, travel)]
         t = lo
         while t <= hi:
             s = base + t * u + normal * 2.5
@@ -582,6 +610,7 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk", joine
               if all(abs(lay.phi - e.phi) > 1e-4 for e in plans.extremes)]     # not drawn twice (a rocker's
     # extremes where its plunger's are the same: LINK60's rocker moves with B alone)
     yokes = {n: yoke_spans(sc, every + plans.extremes + others, n, O, r) for n in mech.links if yoke_guide(mech, n)}
+    travel = wedge_travel(sc, every + plans.extremes + others)
     outlines = draw_frame(rec, sc, every + plans.extremes + others, thick_lays, drawn=every + plans.extremes + others,
                           yokes=yokes)
     rec.circle(_pt(O), r, role="trajectory", layer="construction", step="the crank pin's circle")
@@ -614,13 +643,13 @@ def position_record(plans: Plans, lettered: bool = True, lang: str = "uk", joine
     extremes = [lay for k, lay in enumerate(extremes)          # one drawing where two sliders stop at once
                 if all(abs((lay.phi - e.phi + 180.0) % 360.0 - 180.0) > 1e-6 for e in extremes[:k])]
     for lay in extremes:
-        draw_links(rec, sc, lay, thick=False, role="projection", step="extreme position", yokes=yokes)
+        draw_links(rec, sc, lay, thick=False, role="projection", step="extreme position", yokes=yokes, travel=travel)
     for lay in every:
         if lay.key not in thick_keys:
-            draw_links(rec, sc, lay, thick=False, step=f"position {lay.key}", yokes=yokes)
+            draw_links(rec, sc, lay, thick=False, step=f"position {lay.key}", yokes=yokes, travel=travel)
     for lay in every:
         if lay.key in thick_keys:
-            draw_links(rec, sc, lay, thick=True, step=f"position {lay.key}", yokes=yokes)
+            draw_links(rec, sc, lay, thick=True, step=f"position {lay.key}", yokes=yokes, travel=travel)
     break_under_supports(rec, outlines)
     # every line first (the extreme points, the stroke's dimension, ω1's arc), then the lettering
     late: list[LabelRequest] = []
