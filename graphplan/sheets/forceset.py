@@ -9,8 +9,8 @@ far), the further left the better: a drawing goes beside the last one where the 
 under it, or starts a column to its right (a tall scheme with the groups in a column beside it, as
 the A1 sheet draws them). A drawing never goes back to an earlier sheet nor above-left of the one
 before it — except that a sheet the next drawing would leave mostly empty (a tall scheme alone: 80 %
-of its 20 mm cells blank, review 7 #1) takes a later drawing that reads on its own first, the
-acceleration plan or the lever, where one fits. Drawings stand ``SPACE`` apart (review 7 #18), or
+of its 20 mm cells blank, review 7 #1) takes later drawings that read on their own first, the
+acceleration plan, the lever, the charts over the turn: those that fit and leave it fullest. Drawings stand ``SPACE`` apart (review 7 #18), or
 the layout's ``GAP`` where only that keeps a sheet (sheets/forces.py chooses). The tables, each whole, go together in one to three columns under the drawings at the
 sheet's right, the notes right over the title block; a new sheet only where they do not fit. Each
 sheet's spare room is then shared out between its drawings (their corners' distances from the field's
@@ -254,12 +254,14 @@ def pack(units: Sequence[Sequence[Node]], tables: Sequence[Leaf], notes: Leaf | 
                         return whole
             if spot is None and pages[-1].spots and share(pages[-1]) < FILL_SHARE:
                 # the sheet would be left mostly empty (the slotter's and the sieve's scheme alone on
-                # sheet 1, 80 % of its cells blank): a later drawing that reads on its own — the
-                # acceleration plan the inertia loads come from, the Zhukovsky lever — set here first
-                j = next((j for j, later in enumerate(queue) if movable(later) and place(later, pages[-1])), None)
-                if j is not None:
-                    later = queue.pop(j)
-                    pages[-1].put(place(later, pages[-1]))
+                # sheet 1, 80 % of its cells blank): later drawings that read on their own — the
+                # acceleration plan the inertia loads come from, the Zhukovsky lever, the charts over
+                # the turn — set here first
+                # (of the later drawings that read on their own, those that leave the sheet fullest)
+                moved = _brought_forward(queue, pages[-1], place)
+                if moved:
+                    for j in reversed(moved):
+                        queue.pop(j)
                     spot = place(alts, pages[-1])
             if spot is not None and _is_group(alts[0]) and any(_is_group(q[0]) for q in queue):
                 # a group with another after it: of its places, the one that needs fewest sheets
@@ -317,10 +319,43 @@ def share(page: Skyline) -> float:
     return sum(s.w * s.h for s in page.spots) / (page.W * page.H)
 
 
+def _brought_forward(queue: list, page: Skyline, place) -> list[int]:
+    """The later units (their places in ``queue``) set on a mostly empty ``page`` first, in their
+    reading order: of the drawings that read on their own (``movable``), the ones that leave the page
+    fullest, the fewest then the earliest of those. The slotter's A3 sheet 1 took the first that fit,
+    its lever, and held it alone beside the tall scheme, 69 % empty by the reviews' 20 mm cells, where
+    the M_b and resistance charts one under the other take the room; its sheet 2 then holds the
+    acceleration plan with the lever and the R05 chart. The page takes them; [] where none fits."""
+    from itertools import combinations
+    movables = [j for j, later in enumerate(queue) if movable(later)][:MOVABLE_TRIES]
+    best: tuple | None = None
+    for n in range(1, len(movables) + 1):
+        for js in combinations(movables, n):
+            trial = copy.deepcopy(page)
+            for j in js:
+                spot = place(queue[j], trial)
+                if spot is None:
+                    break
+                trial.put(spot)
+            else:
+                key = (round(share(trial), 6), -n, [-j for j in js])
+                if best is None or key > best[0]:
+                    best = (key, js, trial)
+    if best is None:
+        return []
+    page.segs, page.spots = best[2].segs, best[2].spots
+    return list(best[1])
+
+
+MOVABLE_TRIES = 6      # the later drawings that read on their own ``pack`` tries on a mostly empty sheet
+
+
 def movable(alts: Sequence[Node]) -> bool:
-    """Whether a unit reads on its own, out of the reading order: the acceleration plan, the lever
-    (each of one drawing, named so by ``units_of``'s callers)."""
-    return len(alts) == 1 and isinstance(alts[0], Leaf) and alts[0].name.startswith(("acceleration", "lever"))
+    """Whether a unit reads on its own, out of the reading order: the acceleration plan, the lever,
+    a chart over the turn (each of one drawing, named so by ``units_of``'s callers: "charts 1" as
+    planned, "moment", "resistance", "reaction R05" as drawn)."""
+    return len(alts) == 1 and isinstance(alts[0], Leaf) and alts[0].name.startswith(
+        ("acceleration", "lever", "charts ", "moment", "resistance", "reaction"))
 
 
 def _put_notes(page: Skyline, notes: Leaf) -> bool:
