@@ -10,8 +10,8 @@ under it, or starts a column to its right (a tall scheme with the groups in a co
 the A1 sheet draws them). A drawing never goes back to an earlier sheet nor above-left of the one
 before it — except that a sheet the next drawing would leave mostly empty (a tall scheme alone: 80 %
 of its 20 mm cells blank, review 7 #1) takes later drawings that read on their own first, the
-acceleration plan, the lever, the charts over the turn: those that fit and leave it fullest. Drawings stand ``SPACE`` apart (review 7 #18), or
-the layout's ``GAP`` where only that keeps a sheet (sheets/forces.py chooses). The tables, each whole, go together in one to three columns under the drawings at the
+acceleration plan, the lever, the charts over the turn: those that fit and leave it fullest.
+Drawings stand ``SPACE`` apart (review 7 #18), or the layout's ``GAP`` where only that keeps a sheet (sheets/forces.py chooses). The tables, each whole, go together in one to three columns under the drawings at the
 sheet's right, the notes right over the title block; a new sheet only where they do not fit. Each
 sheet's spare room is then shared out between its drawings (their corners' distances from the field's
 top-left corner stretched alike: boxes that did not meet still do not)."""
