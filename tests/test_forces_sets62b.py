@@ -71,9 +71,9 @@ def test_the_lever_is_still_brought_where_it_alone_fits():
 
 
 def test_which_drawings_read_on_their_own():
-    assert all(movable([Leaf(n, 1.0, 1.0)]) for n in ("acceleration 0", "lever 0", "charts 2", "moment",
+    assert all(movable([Leaf(n, 1.0, 1.0)], charts=True) for n in ("acceleration 0", "lever 0", "charts 2", "moment",
                                                        "resistance", "reaction R05", "acceleration plan"))
-    assert not any(movable([Leaf(n, 1.0, 1.0)]) for n in ("scheme 0", "groups 0", "forces 1", "hodograph R12"))
+    assert not any(movable([Leaf(n, 1.0, 1.0)], charts=True) for n in ("scheme 0", "groups 0", "forces 1", "hodograph R12"))
     assert not movable([Leaf("lever 0", 1.0, 1.0), Leaf("lever 0", 2.0, 2.0)])    # alternatives: not one drawing
 
 

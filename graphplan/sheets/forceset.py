@@ -321,15 +321,20 @@ def share(page: Skyline) -> float:
 
 def _brought_forward(queue: list, page: Skyline, place) -> list[int]:
     """The later units (their places in ``queue``) set on a mostly empty ``page`` first, in their
-    reading order: of the drawings that read on their own (``movable``), the ones that leave the page
-    fullest, the fewest then the earliest of those. The slotter's A3 sheet 1 took the first that fit,
-    its lever, and held it alone beside the tall scheme, 69 % empty by the reviews' 20 mm cells, where
-    the M_b and resistance charts one under the other take the room; its sheet 2 then holds the
-    acceleration plan with the lever and the R05 chart. The page takes them; [] where none fits."""
+    reading order: the first of the acceleration plan and the lever that fits — or, where the page
+    holds one drawing that reads on its own (the scheme, the acceleration plan, the lever: ``lone``),
+    of the drawings that read on their own, the charts over the turn too (``movable``), those that
+    leave the page fullest, the fewest then the earliest of those. The slotter's A3 sheet 1 took the
+    first that fit, its lever, and held it alone beside the tall scheme, 69 % empty by the reviews'
+    20 mm cells, where the M_b and resistance charts one under the other take the room. A sheet
+    that holds a group, or two drawings already, keeps the reading order but for that one drawing
+    (the shaper's A3 sheet 1 held the scheme and the acceleration plan: the M_b chart beside them
+    read before the groups). The page takes them; [] where none fits."""
     from itertools import combinations
-    movables = [j for j, later in enumerate(queue) if movable(later)][:MOVABLE_TRIES]
+    many = lone(page)
+    movables = [j for j, later in enumerate(queue) if movable(later, charts=many)][:MOVABLE_TRIES]
     best: tuple | None = None
-    for n in range(1, len(movables) + 1):
+    for n in range(1, (len(movables) if many else 1) + 1):
         for js in combinations(movables, n):
             trial = copy.deepcopy(page)
             for j in js:
@@ -338,7 +343,7 @@ def _brought_forward(queue: list, page: Skyline, place) -> list[int]:
                     break
                 trial.put(spot)
             else:
-                key = (round(share(trial), 6), -n, [-j for j in js])
+                key = (round(share(trial), 6) if many else 0.0, -n, [-j for j in js])
                 if best is None or key > best[0]:
                     best = (key, js, trial)
     if best is None:
@@ -347,15 +352,23 @@ def _brought_forward(queue: list, page: Skyline, place) -> list[int]:
     return list(best[1])
 
 
+def lone(page: Skyline) -> bool:
+    """Whether the page holds one drawing, one that reads on its own: the scheme ("scheme 0" as
+    planned, "mechanism" as drawn), the acceleration plan, the lever."""
+    nodes = [s.node for s in page.spots]
+    return len(nodes) == 1 and isinstance(nodes[0], Leaf) and (
+        nodes[0].name.startswith(("scheme", "mechanism")) or movable(nodes[0:1]))
+
+
 MOVABLE_TRIES = 6      # the later drawings that read on their own ``pack`` tries on a mostly empty sheet
 
 
-def movable(alts: Sequence[Node]) -> bool:
-    """Whether a unit reads on its own, out of the reading order: the acceleration plan, the lever,
-    a chart over the turn (each of one drawing, named so by ``units_of``'s callers: "charts 1" as
-    planned, "moment", "resistance", "reaction R05" as drawn)."""
-    return len(alts) == 1 and isinstance(alts[0], Leaf) and alts[0].name.startswith(
-        ("acceleration", "lever", "charts ", "moment", "resistance", "reaction"))
+def movable(alts: Sequence[Node], charts: bool = False) -> bool:
+    """Whether a unit reads on its own, out of the reading order: the acceleration plan, the lever;
+    ``charts``: a chart over the turn too (each of one drawing, named so by ``units_of``'s callers:
+    "charts 1" as planned, "moment", "resistance", "reaction R05" as drawn)."""
+    names = ("acceleration", "lever") + (("charts ", "moment", "resistance", "reaction") if charts else ())
+    return len(alts) == 1 and isinstance(alts[0], Leaf) and alts[0].name.startswith(names)
 
 
 def _put_notes(page: Skyline, notes: Leaf) -> bool:
