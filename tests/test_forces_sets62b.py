@@ -80,3 +80,18 @@ def test_which_drawings_read_on_their_own():
 def test_the_packing_is_deterministic():
     a, b = _packed(True), _packed(True)
     assert [[(_names([s]), s.x, s.d) for s in p] for p in a] == [[(_names([s]), s.x, s.d) for s in p] for p in b]
+
+
+def test_a_sheet_of_two_drawings_takes_no_chart_before_the_groups():
+    """The shaper's A3 set: a sheet holding the scheme and the acceleration plan already, the first
+    group too tall for it, takes the lever (the rule before), never the charts over the turn — they
+    would read before the groups."""
+    leaves = _leaves()
+    leaves["scheme"] = [Leaf("scheme 0", 100.0, 150.0)]
+    leaves["acceleration"] = [Leaf("acceleration 0", 120.0, 150.0)]
+    assert (100 * 150 + 120 * 150) / FIELD < 0.5           # mostly empty: the rule acts
+    sheets = pack(units_of(leaves, REGION[2] - REGION[0], True), [], None, REGION, FIRST, LATER)
+    names = [_names(s) for s in sheets]
+    assert names[0] == ["scheme 0", "acceleration 0", "lever 0"], names
+    flat = [n for page in names for n in page]
+    assert all(flat.index(c) > flat.index("groups 2") for c in ("charts 0", "charts 1", "charts 2")), names
