@@ -1341,10 +1341,13 @@ def _set(nat: Natural, f: Form) -> Plan:
                         start=mu)
         mu = grown if grown is not None and sheets_of(grown) == where else mu
         # the fewest sheets, then the tables whole on one of them, then the fewest sheets with one
-        # drawing alone on them, then the emptiest sheet fullest
+        # drawing alone on them, then the fewest of tables alone (review 61 #5; a sheet's drawings
+        # brought forward by ``forceset.pack`` had left the gate's A3 tables alone on sheet 4), then
+        # the emptiest sheet fullest
         pages = _set_pages(nat, f, _leaves(nat, mu), factor, plan_first, gap)
+        alone = sum(all(n in tables or n == "notes" for n in page) for page in where)
         key = (len(where), len({k for k, page in enumerate(where) if any(n in tables for n in page)}), not cap,
-               -gap, _lonely(pages, f), -round(_least_share(pages, f), 3))
+               -gap, _lonely(pages, f), alone, -round(_least_share(pages, f), 3))
         return key, Plan(mu, factor, "set", 1, 1, len(where), packed=True, where=where,
                          plan_first=plan_first, gap=gap)
 

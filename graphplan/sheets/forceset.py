@@ -9,9 +9,9 @@ far), the further left the better: a drawing goes beside the last one where the 
 under it, or starts a column to its right (a tall scheme with the groups in a column beside it, as
 the A1 sheet draws them). A drawing never goes back to an earlier sheet nor above-left of the one
 before it — except that a sheet the next drawing would leave mostly empty (a tall scheme alone: 80 %
-of its 20 mm cells blank, review 7 #1) takes a later drawing that reads on its own first, the
-acceleration plan or the lever, where one fits. Drawings stand ``SPACE`` apart (review 7 #18), or
-the layout's ``GAP`` where only that keeps a sheet (sheets/forces.py chooses). The tables, each whole, go together in one to three columns under the drawings at the
+of its 20 mm cells blank, review 7 #1) takes later drawings that read on their own first, the
+acceleration plan, the lever, the charts over the turn: those that fit and leave it fullest.
+Drawings stand ``SPACE`` apart (review 7 #18), or the layout's ``GAP`` where only that keeps a sheet (sheets/forces.py chooses). The tables, each whole, go together in one to three columns under the drawings at the
 sheet's right, the notes right over the title block; a new sheet only where they do not fit. Each
 sheet's spare room is then shared out between its drawings (their corners' distances from the field's
 top-left corner stretched alike: boxes that did not meet still do not)."""
@@ -254,12 +254,14 @@ def pack(units: Sequence[Sequence[Node]], tables: Sequence[Leaf], notes: Leaf | 
                         return whole
             if spot is None and pages[-1].spots and share(pages[-1]) < FILL_SHARE:
                 # the sheet would be left mostly empty (the slotter's and the sieve's scheme alone on
-                # sheet 1, 80 % of its cells blank): a later drawing that reads on its own — the
-                # acceleration plan the inertia loads come from, the Zhukovsky lever — set here first
-                j = next((j for j, later in enumerate(queue) if movable(later) and place(later, pages[-1])), None)
-                if j is not None:
-                    later = queue.pop(j)
-                    pages[-1].put(place(later, pages[-1]))
+                # sheet 1, 80 % of its cells blank): later drawings that read on their own — the
+                # acceleration plan the inertia loads come from, the Zhukovsky lever, the charts over
+                # the turn — set here first
+                # (of the later drawings that read on their own, those that leave the sheet fullest)
+                moved = _brought_forward(queue, pages[-1], place)
+                if moved:
+                    for j in reversed(moved):
+                        queue.pop(j)
                     spot = place(alts, pages[-1])
             if spot is not None and _is_group(alts[0]) and any(_is_group(q[0]) for q in queue):
                 # a group with another after it: of its places, the one that needs fewest sheets
@@ -317,10 +319,56 @@ def share(page: Skyline) -> float:
     return sum(s.w * s.h for s in page.spots) / (page.W * page.H)
 
 
-def movable(alts: Sequence[Node]) -> bool:
-    """Whether a unit reads on its own, out of the reading order: the acceleration plan, the lever
-    (each of one drawing, named so by ``units_of``'s callers)."""
-    return len(alts) == 1 and isinstance(alts[0], Leaf) and alts[0].name.startswith(("acceleration", "lever"))
+def _brought_forward(queue: list, page: Skyline, place) -> list[int]:
+    """The later units (their places in ``queue``) set on a mostly empty ``page`` first, in their
+    reading order: the first of the acceleration plan and the lever that fits — or, where the page
+    holds one drawing that reads on its own (the scheme, the acceleration plan, the lever: ``lone``),
+    of the drawings that read on their own, the charts over the turn too (``movable``), those that
+    leave the page fullest, the fewest then the earliest of those. The slotter's A3 sheet 1 took the
+    first that fit, its lever, and held it alone beside the tall scheme, 69 % empty by the reviews'
+    20 mm cells, where the M_b and resistance charts one under the other take the room. A sheet
+    that holds a group, or two drawings already, keeps the reading order but for that one drawing
+    (the shaper's A3 sheet 1 held the scheme and the acceleration plan: the M_b chart beside them
+    read before the groups). The page takes them; [] where none fits."""
+    from itertools import combinations
+    many = lone(page)
+    movables = [j for j, later in enumerate(queue) if movable(later, charts=many)][:MOVABLE_TRIES]
+    best: tuple | None = None
+    for n in range(1, (len(movables) if many else 1) + 1):
+        for js in combinations(movables, n):
+            trial = copy.deepcopy(page)
+            for j in js:
+                spot = place(queue[j], trial)
+                if spot is None:
+                    break
+                trial.put(spot)
+            else:
+                key = (round(share(trial), 6) if many else 0.0, -n, [-j for j in js])
+                if best is None or key > best[0]:
+                    best = (key, js, trial)
+    if best is None:
+        return []
+    page.segs, page.spots = best[2].segs, best[2].spots
+    return list(best[1])
+
+
+def lone(page: Skyline) -> bool:
+    """Whether the page holds one drawing, one that reads on its own: the scheme ("scheme 0" as
+    planned, "mechanism" as drawn), the acceleration plan, the lever."""
+    nodes = [s.node for s in page.spots]
+    return len(nodes) == 1 and isinstance(nodes[0], Leaf) and (
+        nodes[0].name.startswith(("scheme", "mechanism")) or movable(nodes[0:1]))
+
+
+MOVABLE_TRIES = 6      # the later drawings that read on their own ``pack`` tries on a mostly empty sheet
+
+
+def movable(alts: Sequence[Node], charts: bool = False) -> bool:
+    """Whether a unit reads on its own, out of the reading order: the acceleration plan, the lever;
+    ``charts``: a chart over the turn too (each of one drawing, named so by ``units_of``'s callers:
+    "charts 1" as planned, "moment", "resistance", "reaction R05" as drawn)."""
+    names = ("acceleration", "lever") + (("charts ", "moment", "resistance", "reaction") if charts else ())
+    return len(alts) == 1 and isinstance(alts[0], Leaf) and alts[0].name.startswith(names)
 
 
 def _put_notes(page: Skyline, notes: Leaf) -> bool:
