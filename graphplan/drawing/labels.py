@@ -949,6 +949,23 @@ def row_clear(record: Record, row: list[Primitive], away: tuple[float, float]) -
     return [p.moved(ux * best, uy * best) for p in row]
 
 
+def beside_first(record: Record, alternatives: list[LabelRequest], accept=None, layer: str = "labels") -> bool:
+    """The first of ``alternatives`` (one label asked at several anchors) with a free spot right beside
+    its anchor (``_near``: no leader) whose box ``accept`` takes, lettered there; False where none has
+    one (the callers' next tries: thin lines broken under it, a leader)."""
+    ob = obstacles(record.items)
+    for req in alternatives:
+        ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
+        size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
+        spot = _near(ob.near(req.at, NEAR[-1] + size), req, ink, accept)
+        if spot is not None:
+            start = spot[1]
+            record.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step,
+                         layer=layer)
+            return True
+    return False
+
+
 @_remembered
 def place_first(record: Record, alternatives: list[LabelRequest], layer: str = "labels",
                 accept=None) -> Record:
@@ -961,16 +978,8 @@ def place_first(record: Record, alternatives: list[LabelRequest], layer: str = "
     than any other link's, outside their outlines: ``drawing.plans.number_owner``)."""
     if _SKETCH[-1] or not alternatives:
         return record
-    ob = obstacles(record.items)
-    for req in alternatives:
-        ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
-        size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + CLEAR + 2.0
-        spot = _near(ob.near(req.at, NEAR[-1] + size), req, ink, accept)
-        if spot is not None:
-            box, start, _ = spot
-            record.label((start.real, start.imag), req.text, size=req.size, anchor="start", step=req.step,
-                         layer=layer)
-            return record
+    if beside_first(record, alternatives, accept, layer):
+        return record
     for req in (r for r in alternatives if r.breaks):   # by its bar, the thin lines broken under it
         ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
         spot = _breaking(record, req, ink, accept)

@@ -1171,7 +1171,7 @@ def place_swing(rec: Record, alternatives: list[LabelRequest], frame: tuple[floa
     stood on a 40-mm leader below B″, 20 mm past the plan's lines — the A3 plan measured too tall
     for its sheet fell to 1:4. Beside the arc's end, under the rocker's lowest line, it does not
     grow the plan."""
-    from graphplan.drawing.labels import CLEAR as _CLEAR, FAR, NEAR, _far, _near, obstacles
+    from graphplan.drawing.labels import CLEAR as _CLEAR, FAR, _far, beside_first, obstacles
     from graphplan.graphic.record import Primitive
     if not alternatives:
         return rec
@@ -1179,15 +1179,9 @@ def place_swing(rec: Record, alternatives: list[LabelRequest], frame: tuple[floa
 
     def inside(box) -> bool:
         return box[0] >= x0 and box[1] >= y0 and box[2] <= x1 and box[3] <= y1
+    if beside_first(rec, alternatives, inside):
+        return rec
     ob = obstacles(rec.items)
-    for req in alternatives:
-        ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
-        size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + _CLEAR + 2.0
-        spot = _near(ob.near(req.at, NEAR[-1] + size), req, ink, inside)
-        if spot is not None:
-            rec.label((spot[1].real, spot[1].imag), req.text, size=req.size, anchor="start", step=req.step,
-                      layer="labels")
-            return rec
     for req in alternatives:
         ink = Primitive("text", ((0.0, 0.0),), text=req.text, size=req.size).ink()
         size = (ink[2] - ink[0]) + (ink[3] - ink[1]) + _CLEAR + 2.0
